@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Runs every pyramid workload in its own process (so peak_MB is that workload's) and prints
+# median wall time and peak memory. usage: bench/run.sh BUILD_DIR [filter-regex]
+set -euo pipefail
+bench="$1/bench/pyramid_bench"
+filter="${2:-.}"
+for name in $("$bench" --benchmark_list_tests | grep -E "$filter"); do
+  "$bench" --benchmark_filter="^${name}\$" --benchmark_format=csv 2>/dev/null \
+    | awk -F, -v n="$name" '$1 ~ /_median"?$/ { for (i = 1; i <= NF; i++) if (h[i] == "\"peak_MB\"" || h[i] == "peak_MB") p = $i; printf "%-36s median %8.0f ms  peak %6.0f MB\n", n, $3, p }
+                            NR == 1 { for (i = 1; i <= NF; i++) h[i] = $i }'
+done

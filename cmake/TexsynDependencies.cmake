@@ -1,0 +1,26 @@
+# SPDX-License-Identifier: Apache-2.0
+# Finds texsyn's dependencies on Debian 12, with the workarounds ../shared/ECOSYSTEM.md §1 verified.
+find_package(PkgConfig REQUIRED)
+
+# OIIO's exported target lists /usr/include/opencv4 even when libopencv-dev is absent.
+find_package(OpenImageIO 2.4 CONFIG REQUIRED)
+get_target_property(_oiio_inc OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
+list(FILTER _oiio_inc EXCLUDE REGEX "opencv4")
+set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_inc}")
+
+# OCIO's config package is installed where CMake does not look; pkg-config works.
+find_package(OpenColorIO 2.1 CONFIG QUIET)
+if(NOT TARGET OpenColorIO::OpenColorIO)
+  pkg_check_modules(OCIO REQUIRED IMPORTED_TARGET GLOBAL OpenColorIO>=2.1)
+  add_library(OpenColorIO::OpenColorIO ALIAS PkgConfig::OCIO)
+endif()
+
+find_package(Imath CONFIG REQUIRED)
+find_package(Eigen3 3.3 CONFIG REQUIRED)
+find_package(nlohmann_json 3 CONFIG REQUIRED)
+# Debian ships only the shared float build; without SHARED the config looks for static targets.
+find_package(kissfft CONFIG REQUIRED COMPONENTS SHARED float)
+
+if(TEXSYN_WITH_FFTW)
+  pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
+endif()

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: Apache-2.0
+// Colour: OCIO colour management and the PCA colour decorrelation of Heeger & Bergen
+// 1995 §3.5.
+//
+// Policy (DESIGN.md "Colour"): statistics are taken in the config's scene_linear role.
+// Inputs are converted to scene_linear on the way in and to the requested space on the
+// way out. Alpha is never colour converted and never dropped.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <texsyn/image.h>
+
+namespace texsyn {
+
+/// An OCIO config. Immutable after loading; thread safe.
+class ColorConfig {
+public:
+    ~ColorConfig();
+    ColorConfig(ColorConfig&&) noexcept;
+    ColorConfig& operator=(ColorConfig&&) noexcept;
+
+    /// Loads, in order of precedence: `explicit_path` if not empty, else $OCIO if set,
+    /// else texsyn's bundled config (compiled into the library; the same file is installed
+    /// as share/texsyn/ocio/config.ocio). Returns nullptr and sets `error` (naming the file
+    /// and OCIO's message) if the config cannot be read or does not validate.
+    static std::unique_ptr<ColorConfig> load(const std::string& explicit_path,
+                                             std::string& error);
+    /// texsyn's bundled config text (YAML).
+    static const char* bundled_config_text();
+
+    /// Where the config came from: a file path or "<bundled>".
+    const std::string& source() const;
+    /// Canonical name of the colour space `name` (aliases and role names resolve), or ""
+    /// if the config has no such space.
+    std::string resolve(const std::string& name) const;
+    /// Canonical name of the scene_linear role's colour space.
+    std::string scene_linear() const;
+    /// Whether `name` is a data space (no conversion applies to it).
+    bool is_data(const std::string& name) const;
+    /// All colour space names, in config order.
+    std::vector<std::string> colorspace_names() const;
+
+    /// Converts the colour channels of `image` (1: grey, >= 3: the first three are RGB;
+    /// alpha and other channels are untouched) from space `from` to space `to`, in place.
+    /// Fails (false, `error` names the unknown space or OCIO's message) without modifying
+    /// the image.
+    bool convert(PlanarImage& image, const std::string& from, const std::string& to,
+                 std::string& error, int nthreads = 0) const;
+
+    /// The colour space an image file's pixels are in: `oiio:ColorSpace` from `spec` if the
+    /// config knows it, else `fallback` ("" when unknown). 8- and 16-bit integer files
+    /// without a tag are taken as sRGB-encoded ("sRGB - Texture"), float files as
+    /// scene_linear — what OIIO assumes too.
+    std::string guess_colorspace(const OIIO::ImageSpec& spec) const;
+
+private:
+    struct Impl;
+    explicit ColorConfig(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> m_impl;
+};
+
+/// PCA colour decorrelation (§3.5): y = M (x - mean) with M = S^-1 U^T from the SVD of the
+/// colour covariance C = U S^2 U^T, so the components pc0.. are uncorrelated with unit
+/// variance. Directions whose singular value is below 1e-6 of the largest carry no signal:
+/// they get unit scale (no division by zero) and are marked `constant`, so a constant
+/// sample or one whose colours lie on a line or plane gives a finite, correct result.
+struct ColorTransform {
+    int n = 0;                        ///< number of colour channels
+    std::vector<double> mean;         ///< n
+    std::vector<double> forward;      ///< n x n, row-major: M
+    std::vector<double> inverse;      ///< n x n, row-major: M^-1 = U S
+    std::vector<bool> constant;       ///< n: component carries no variance
+};
+
+/// Fits the transform to the first `ncolor` channels of `image` (double accumulation in
+/// fixed row order, so the result does not depend on threads).
+ColorTransform fit_color_transform(const PlanarImage& image, int ncolor);
+
+/// Applies x -> M (x - mean) to the first t.n channels, in place.
+void decorrelate(PlanarImage& image, const ColorTransform& t, int nthreads = 0);
+
+/// Applies y -> M^-1 y + mean to the first t.n channels, in place.
+void recorrelate(PlanarImage& image, const ColorTransform& t, int nthreads = 0);
+
+}  // namespace texsyn

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: Apache-2.0
+// File input and atomic output. Every message names the file.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+namespace texsyn {
+
+/// Reads the first subimage of `filename` completely, converting pixels to float. Fails
+/// (false, "FILE: reason") if the file is missing, unreadable, truncated or not an image.
+bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error);
+
+/// A path in the same directory as `filename`, with the same extension (so OIIO picks the
+/// same format), that does not exist yet: write there, then commit_file().
+std::string temporary_path_for(const std::string& filename);
+
+/// Renames `temporary` over `filename` (atomic on one file system); removes `temporary`
+/// and fails if the rename fails.
+bool commit_file(const std::string& temporary, const std::string& filename, std::string& error);
+
+/// Whether `a` and `b` name the same existing file (after resolving links and "..").
+bool same_file(const std::string& a, const std::string& b);
+
+/// Writes `image` to `filename` atomically (temporary file + rename): a failed write
+/// leaves no file behind and never an incomplete one. `format` is the pixel type on disk
+/// (TypeUnknown = the buffer's). Fails (false, "FILE: reason").
+bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename,
+                        OIIO::TypeDesc format, std::string& error);
+
+}  // namespace texsyn

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: Apache-2.0
+// Option tables: each method's options are declared once (name, member, range, help) and
+// that one declaration drives CLI `:name=value` parsing, --help, recipes, the
+// synth:options metadata and the generated docs (STYLE.md "Options are declared once").
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace texsyn {
+
+/// Parses a decimal integer in [lo, hi]; false (with a message naming `name`, the value
+/// and the range) otherwise.
+bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, int64_t hi,
+                      int64_t& value, std::string& error);
+/// Parses "WxH" with 1 <= W, H <= hi.
+bool parse_size_option(std::string_view name, std::string_view text, int hi, int& width,
+                       int& height, std::string& error);
+
+/// One option of an options struct T.
+template <class T> struct OptionField {
+    std::string name;
+    std::string help;
+    std::string allowed;  ///< human-readable range or choices, e.g. "1..8" or "exact|bins256"
+    std::function<bool(T&, std::string_view, std::string&)> parse;
+    std::function<std::string(const T&)> format;
+};
+
+/// The option table of an options struct T.
+template <class T> class OptionTable {
+public:
+    /// An int member in [lo, hi].
+    OptionTable& integer(const char* name, int T::*member, int lo, int hi, const char* help)
+    {
+        std::string nm = name;
+        m_fields.push_back({ nm, help, std::to_string(lo) + ".." + std::to_string(hi),
+                             [=](T& t, std::string_view v, std::string& err) {
+                                 int64_t x = 0;
+                                 if (!parse_int_option(nm, v, lo, hi, x, err))
+                                     return false;
+                                 t.*member = int(x);
+                                 return true;
+                             },
+                             [=](const T& t) { return std::to_string(t.*member); } });
+        return *this;
+    }
+    /// Two int members written as "WxH", each in [1, hi]; "0x0" is accepted only when
+    /// `zero_means` is not empty (it is then described by it).
+    OptionTable& size(const char* name, int T::*w, int T::*h, int hi, const char* zero_means,
+                      const char* help)
+    {
+        std::string nm = name;
+        std::string zero = zero_means;
+        m_fields.push_back({ nm, help, "WxH, 1.." + std::to_string(hi),
+                             [=](T& t, std::string_view v, std::string& err) {
+                                 if (!zero.empty() && v == "0x0") {
+                                     t.*w = t.*h = 0;
+                                     return true;
+                                 }
+                                 return parse_size_option(nm, v, hi, t.*w, t.*h, err);
+                             },
+                             [=](const T& t) {
+                                 return std::to_string(t.*w) + "x" + std::to_string(t.*h);
+                             } });
+        return *this;
+    }
+    /// An enum member chosen by name.
+    template <class E>
+    OptionTable& choice(const char* name, E T::*member,
+                        std::vector<std::pair<std::string, E>> values, const char* help)
+    {
+        std::string nm = name;
+        std::string allowed;
+        for (auto& v : values)
+            allowed += (allowed.empty() ? "" : "|") + v.first;
+        m_fields.push_back({ nm, help, allowed,
+                             [=](T& t, std::string_view v, std::string& err) {
+                                 for (auto& c : values)
+                                     if (c.first == v) {
+                                         t.*member = c.second;
+                                         return true;
+                                     }
+                                 err = nm + "=" + std::string(v) + " is not one of "
+                                       + allowed;
+                                 return false;
+                             },
+                             [=](const T& t) {
+                                 for (auto& c : values)
+                                     if (c.second == t.*member)
+                                         return c.first;
+                                 return std::string("?");
+                             } });
+        return *this;
+    }
+
+    const std::vector<OptionField<T>>& fields() const { return m_fields; }
+
+    /// Sets option `name` from `value`; false with a message for an unknown name or a
+    /// bad value. The struct is unchanged on failure.
+    bool set(T& opts, std::string_view name, std::string_view value, std::string& error) const
+    {
+        for (auto& f : m_fields)
+            if (f.name == name) {
+                T copy = opts;
+                if (!f.parse(copy, value, error))
+                    return false;
+                opts = std::move(copy);
+                return true;
+            }
+        error = "unknown option '" + std::string(name) + "' (known: " + names() + ")";
+        return false;
+    }
+
+    /// "name=value:name=value…" with every option, in table order (synth:options).
+    std::string format(const T& opts) const
+    {
+        std::string s;
+        for (auto& f : m_fields)
+            s += (s.empty() ? "" : ":") + f.name + "=" + f.format(opts);
+        return s;
+    }
+
+    /// "a, b, c": the option names.
+    std::string names() const
+    {
+        std::string s;
+        for (auto& f : m_fields)
+            s += (s.empty() ? "" : ", ") + f.name;
+        return s;
+    }
+
+private:
+    std::vector<OptionField<T>> m_fields;
+};
+
+/// Splits "name=value:name=value" into pairs. False (message names the malformed piece)
+/// if a piece has no '=' or an empty name.
+bool split_option_string(std::string_view text,
+                         std::vector<std::pair<std::string, std::string>>& pairs,
+                         std::string& error);
+
+}  // namespace texsyn

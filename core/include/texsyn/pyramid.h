@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: Apache-2.0
+// Image pyramids for Heeger & Bergen 1995 §3.1: Laplacian (Burt & Adelson) and steerable
+// (Simoncelli & Freeman, Fourier-domain construction; ../shared/notes/pyramid-math.md).
+//
+// Rules for this header:
+//  - A pyramid is a plan for one image size: build(image) -> bands, collapse(bands) ->
+//    image. Plans are immutable after construction. Thread safety: build() and collapse()
+//    may be called concurrently on one plan.
+//  - collapse(build(x)) == x to float rounding for both kinds and every size (tests check
+//    it), so iterating build/modify/collapse does not drift (the paper's warning).
+//  - Bands are listed coarse-to-fine-independent in a fixed order with pyrtools names:
+//      steerable: "highpass", "s0.o0" .. "s0.o<K-1>", "s1.o0", …, "lowpass"
+//      laplacian: "L0" (finest) … "L<S-1>", "lowpass"
+//  - Band values keep the image's units at every level, whatever the image size, so the
+//    bands of a 256x256 sample and of a 1024x1024 synthesis are directly comparable.
+//  - `nthreads` follows OIIO (0 = default pool size); results do not depend on it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <texsyn/fft.h>
+#include <texsyn/image.h>
+
+namespace texsyn {
+
+enum class PyramidKind { Steerable, Laplacian };
+
+/// "steerable" or "laplacian".
+const char* pyramid_kind_name(PyramidKind kind);
+
+/// A band decomposition plan for one image size.
+class Pyramid {
+public:
+    virtual ~Pyramid() = default;
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+    /// Band names in the order build() produces them (see the header comment).
+    const std::vector<std::string>& band_names() const { return m_names; }
+    int nbands() const { return int(m_names.size()); }
+
+    /// Decomposes `image` (width x height) into nbands() planes (resized as needed).
+    virtual void build(const Plane& image, std::vector<Plane>& bands, int nthreads = 0) const = 0;
+    /// Reconstructs the image from bands shaped as build() makes them.
+    virtual void collapse(const std::vector<Plane>& bands, Plane& image,
+                          int nthreads = 0) const = 0;
+
+protected:
+    Pyramid(int width, int height) : m_width(width), m_height(height) {}
+    int m_width;
+    int m_height;
+    std::vector<std::string> m_names;
+};
+
+/// Largest number of scales for a sample of this size: the most that keeps the coarsest
+/// (low-pass) band at least 8 pixels on its short side (0 if the sample is under 16).
+int max_pyramid_scales(int sample_width, int sample_height);
+
+/// Laplacian pyramid with `scales` band-pass levels plus the low-pass residual.
+/// reduce = blur with the separable (1,4,6,4,1)/16 kernel and keep even samples (size
+/// ceil(n/2)); expand = insert zeros, blur, x4. Bands are G_k - expand(G_{k+1}), exact for
+/// any size and either boundary. `boundary`: Circular for synthesis, Reflect for analysis
+/// (§3.4). Requires 1 <= scales and width, height >= 2^scales.
+std::unique_ptr<Pyramid> make_laplacian_pyramid(int width, int height, int scales,
+                                                Boundary boundary);
+
+/// Steerable pyramid, Fourier-domain and self-inverting (a tight frame): high-pass
+/// residual, `scales` levels of `orientations` (1..8) oriented bands, low-pass residual.
+/// Only the low-pass is subsampled: the bands of scale s are ceil(width/2^s) x
+/// ceil(height/2^s), the low-pass ceil(width/2^scales) x ceil(height/2^scales). Any
+/// width, height >= 2^scales works (odd and non-power-of-two sizes too): masks are
+/// evaluated at each level's true frequencies, so cropping is exact. The transform is
+/// circular; analyse a non-periodic sample through periodic_component() first.
+/// Returns nullptr and sets `error` if the FFT backend is unavailable or the arguments
+/// are out of range.
+std::unique_ptr<Pyramid> make_steerable_pyramid(int width, int height, int scales,
+                                                int orientations, FftBackend fft,
+                                                std::string& error);
+
+/// Moisan's periodic + smooth decomposition (notes/pyramid-math.md): returns the periodic
+/// component p of `image` (same size and mean), whose spectrum has none of the cross-shaped
+/// energy that the jump between opposite edges puts into a circular transform.
+Plane periodic_component(const Plane& image, FftBackend fft, int nthreads = 0);
+
+}  // namespace texsyn

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: Apache-2.0
+// Texture synthesis entry points, in the ImageBufAlgo style (DESIGN.md "API conventions").
+//
+// Rules for every function here:
+//  - Two forms: `bool f(ImageBuf& dst, …)` does the work; `ImageBuf f(…)` wraps it and
+//    returns an ImageBuf whose has_error() is true on failure. Errors go to
+//    dst.errorfmt(); nothing throws across this API and nothing exits.
+//  - The sample is read as float (any pixel type, any channel count 1..n; the channel
+//    named by spec.alpha_channel is alpha). Its pixels must already be scene-linear:
+//    ColorConfig::convert (color.h) does that; the `texsyn` tool does it for you.
+//  - The result is a float image with the sample's channels and channel names, its
+//    pixels scene-linear, origin (0,0), carrying synth:version, synth:method, synth:seed
+//    and synth:options metadata.
+//  - Deterministic: a seed gives bit-identical output whatever opt.nthreads is.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <texsyn/fft.h>
+#include <texsyn/histogram.h>
+#include <texsyn/image.h>
+#include <texsyn/options.h>
+#include <texsyn/pyramid.h>
+
+namespace texsyn {
+
+/// Options of the pyramid method. Defaults are Heeger & Bergen's.
+struct PyramidOptions {
+    int width = 0;                   ///< output size; 0x0 = the sample's size
+    int height = 0;
+    int iterations = 5;              ///< §3.3: "about 5 iterations"
+    PyramidKind pyramid = PyramidKind::Steerable;
+    int scales = 0;                  ///< 0 = max_pyramid_scales(sample)
+    int orientations = 4;            ///< steerable bands per scale, 1..8
+    HistogramMode histogram = HistogramMode::Exact;
+    FftBackend fft = FftBackend::Kiss;
+    uint64_t seed = 0;               ///< set by the tool's --seed, not a `:name=` option
+    int nthreads = 0;                ///< 0 = OIIO's default; never changes the result
+    /// Called with the fraction done (0..1) after each iteration of each channel, from the
+    /// calling thread; may be empty. Not an option: it never changes the result.
+    std::function<void(float)> progress;
+
+    /// The table behind `--pyramid:name=value`, recipes, synth:options and the docs.
+    static const OptionTable<PyramidOptions>& table();
+
+    /// Checks the options alone (ranges, backend availability). False with a message.
+    bool validate(std::string& error) const;
+};
+
+/// A named multi-channel image: one subband of one pyramid (for --subbands output).
+struct NamedImage {
+    std::string name;  ///< e.g. "sample.s2.o1", "synth.highpass", "synth.L3"
+    PlanarImage image;  ///< channels pc0, pc1, … (decorrelated colour) plus A if alpha
+};
+
+/// Bytes of memory a synthesis of this size needs (the estimate the size check uses).
+size_t pyramid_memory_estimate(int width, int height, int nchannels,
+                               const PyramidOptions& opt);
+
+/// Heeger & Bergen 1995 §3.3 match-texture with §3.4 edge handling and §3.5 colour.
+/// Decorrelates the sample's colour channels (PCA), analyses each component (steerable
+/// or Laplacian pyramid of the sample's periodic component; exact or 256-bin histograms),
+/// starts from seeded uniform noise, and iterates `iterations` times: build pyramid, match
+/// every subband, collapse, match the image histogram. Alpha is synthesized as its own
+/// channel. After undoing the decorrelation, each channel is histogram-matched to the
+/// sample once more. Output: opt.width x opt.height (any size, larger or smaller than the
+/// sample), tiling seamlessly (circular synthesis).
+/// Fails if the options are invalid, the sample has an error, NaN/Inf pixels, or is too
+/// small for the pyramid (message says the largest `scales` it allows), or if the output
+/// would need more memory than the machine has (message gives the amount).
+/// If `subbands` is not null it receives the sample's and the final synthesis's subbands
+/// (names "sample.<band>" and "synth.<band>").
+bool pyramid_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample,
+                        const PyramidOptions& opt, std::vector<NamedImage>* subbands = nullptr);
+OIIO::ImageBuf pyramid_synthesize(const OIIO::ImageBuf& sample, const PyramidOptions& opt,
+                                  std::vector<NamedImage>* subbands = nullptr);
+
+/// texsyn's version string, e.g. "0.1.0".
+const char* version();
+
+}  // namespace texsyn

@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: Apache-2.0
+// KissFFT backend. Only the complex kiss_fft is used: with distinct input and output its
+// cfg is read-only, so one plan serves concurrent calls (kiss_fftr keeps a scratch buffer
+// in its cfg, and kiss_fftndr crashes). Real rows are transformed in pairs as one complex
+// FFT of x = a + i b; columns of the half spectrum are gathered in blocks so that each
+// complex FFT runs on contiguous memory.
+#include "fft/fft_pvt.h"
+
+#include <algorithm>
+#include <new>
+#include <vector>
+
+#include <OpenImageIO/parallel.h>
+#include <kiss_fft.h>
+
+namespace texsyn {
+namespace {
+
+using Cpx = std::complex<float>;
+static_assert(sizeof(kiss_fft_cpx) == sizeof(Cpx), "kiss_fft_cpx must be two floats");
+
+// Each item (a row pair, a column block) is a whole FFT: split down to single items,
+// rather than OIIO's default minimum of 1024 items per task.
+OIIO::paropt fft_paropt(int nthreads)
+{
+    return OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1);
+}
+
+// Columns per gather block: 16 complex values are two cache lines of each row.
+constexpr int64_t column_block = 16;
+
+class KissCfg {
+public:
+    KissCfg(int n, bool inverse)
+        : m_n(n)
+        , m_cfg(kiss_fft_alloc(n, inverse ? 1 : 0, nullptr, nullptr))
+    {
+        if (!m_cfg)
+            throw std::bad_alloc();
+    }
+    ~KissCfg() { kiss_fft_free(m_cfg); }
+    KissCfg(const KissCfg&)            = delete;
+    KissCfg& operator=(const KissCfg&) = delete;
+
+    void run(const Cpx* in, Cpx* out) const
+    {
+        if (m_n == 1)  // kiss_fft's generic radix path is not meant for n = 1
+            out[0] = in[0];
+        else
+            kiss_fft(m_cfg, reinterpret_cast<const kiss_fft_cpx*>(in),
+                     reinterpret_cast<kiss_fft_cpx*>(out));
+    }
+
+private:
+    int m_n;
+    kiss_fft_cfg m_cfg;
+};
+
+// Per-thread task scratch, grown on demand. Tasks never wait on other tasks while they
+// hold it, so it cannot be re-entered.
+Cpx* task_scratch(size_t n)
+{
+    thread_local std::vector<Cpx> buffer;
+    if (buffer.size() < n)
+        buffer.resize(n);
+    return buffer.data();
+}
+
+// The inverse's intermediate spectrum, held across parallel loops: a thread that runs
+// another call's tasks while it waits must not reuse it, hence the busy flag.
+class SpectrumScratch {
+public:
+    explicit SpectrumScratch(size_t n)
+        : m_shared(shared())
+    {
+        if (m_shared.busy) {
+            m_own.resize(n);
+            m_data = m_own.data();
+            return;
+        }
+        m_shared.busy = true;
+        m_owner       = true;
+        if (m_shared.data.size() < n)
+            m_shared.data.resize(n);
+        m_data = m_shared.data.data();
+    }
+    ~SpectrumScratch()
+    {
+        if (m_owner)
+            m_shared.busy = false;
+    }
+    SpectrumScratch(const SpectrumScratch&)            = delete;
+    SpectrumScratch& operator=(const SpectrumScratch&) = delete;
+    Cpx* data() { return m_data; }
+
+private:
+    struct Shared {
+        std::vector<Cpx> data;
+        bool busy = false;
+    };
+    static Shared& shared()
+    {
+        thread_local Shared s;
+        return s;
+    }
+    Shared& m_shared;
+    std::vector<Cpx> m_own;
+    Cpx* m_data  = nullptr;
+    bool m_owner = false;
+};
+
+class KissFft2D final : public RealFft2D {
+public:
+    KissFft2D(int width, int height)
+        : RealFft2D(width, height)
+        , m_row_fwd(width, false)
+        , m_row_inv(width, true)
+        , m_col_fwd(height, false)
+        , m_col_inv(height, true)
+    {
+    }
+
+    void forward(const float* in, Cpx* out, int nthreads) const override
+    {
+        const int64_t w = m_width, h = m_height, wc = w / 2 + 1;
+        OIIO::parallel_for_range(
+            int64_t(0), (h + 1) / 2,
+            [&](int64_t begin, int64_t end) {
+                Cpx* z  = task_scratch(2 * size_t(w));
+                Cpx* zf = z + w;
+                for (int64_t p = begin; p < end; ++p) {
+                    const int64_t y0 = 2 * p;
+                    const bool pair  = y0 + 1 < h;
+                    const float* a   = in + y0 * w;
+                    const float* b   = a + w;
+                    for (int64_t x = 0; x < w; ++x)
+                        z[x] = Cpx(a[x], pair ? b[x] : 0.0f);
+                    m_row_fwd.run(z, zf);
+                    // Split Z = A + iB using A(k) = (Z(k) + conj Z(-k))/2, B(k) = (Z(k) - conj
+                    // Z(-k))/2i.
+                    Cpx* oa = out + y0 * wc;
+                    Cpx* ob = oa + wc;
+                    for (int64_t k = 0; k < wc; ++k) {
+                        const Cpx zk = zf[k];
+                        const Cpx zc = std::conj(zf[k == 0 ? 0 : w - k]);
+                        oa[k]        = 0.5f * (zk + zc);
+                        if (pair)
+                            ob[k] = Cpx(0.5f * (zk.imag() - zc.imag()),
+                                        -0.5f * (zk.real() - zc.real()));
+                    }
+                }
+            },
+            fft_paropt(nthreads));
+        columns(out, out, m_col_fwd, nthreads);
+    }
+
+    void inverse(const Cpx* in, float* out, int nthreads) const override
+    {
+        const int64_t w = m_width, h = m_height, wc = w / 2 + 1;
+        SpectrumScratch work(spectrum_size());
+        Cpx* spec = work.data();
+        columns(in, spec, m_col_inv, nthreads);
+        const float scale = float(1.0 / (double(w) * double(h)));
+        OIIO::parallel_for_range(
+            int64_t(0), (h + 1) / 2,
+            [&](int64_t begin, int64_t end) {
+                Cpx* z  = task_scratch(2 * size_t(w));
+                Cpx* zf = z + w;
+                for (int64_t p = begin; p < end; ++p) {
+                    const int64_t y0 = 2 * p;
+                    const bool pair  = y0 + 1 < h;
+                    const Cpx* a     = spec + y0 * wc;
+                    const Cpx* b     = a + wc;
+                    // Z = A + iB over the full row from the Hermitian halves; the imaginary
+                    // parts of the self-conjugate bins (DC, even-width Nyquist) are dropped,
+                    // as a c2r transform does.
+                    z[0] = Cpx(a[0].real(), pair ? b[0].real() : 0.0f);
+                    for (int64_t k = 1; k < wc; ++k) {
+                        const Cpx ak = a[k];
+                        const Cpx bk = pair ? b[k] : Cpx(0.0f);
+                        if (2 * k == w) {
+                            z[k] = Cpx(ak.real(), bk.real());
+                            continue;
+                        }
+                        z[k]     = Cpx(ak.real() - bk.imag(), ak.imag() + bk.real());
+                        z[w - k] = Cpx(ak.real() + bk.imag(), bk.real() - ak.imag());
+                    }
+                    m_row_inv.run(z, zf);
+                    float* oa = out + y0 * w;
+                    float* ob = oa + w;
+                    for (int64_t x = 0; x < w; ++x)
+                        oa[x] = zf[x].real() * scale;
+                    if (pair)
+                        for (int64_t x = 0; x < w; ++x)
+                            ob[x] = zf[x].imag() * scale;
+                }
+            },
+            fft_paropt(nthreads));
+    }
+
+private:
+    // Complex FFT of every column of a half spectrum; src may equal dst (each block reads
+    // all of its columns before writing them).
+    void columns(const Cpx* src, Cpx* dst, const KissCfg& cfg, int nthreads) const
+    {
+        const int64_t h = m_height, wc = m_width / 2 + 1;
+        const int64_t nblocks = (wc + column_block - 1) / column_block;
+        OIIO::parallel_for_range(
+            int64_t(0), nblocks,
+            [&](int64_t begin, int64_t end) {
+                Cpx* gathered = task_scratch(2 * size_t(column_block * h));
+                Cpx* result   = gathered + column_block * h;
+                for (int64_t blk = begin; blk < end; ++blk) {
+                    const int64_t c0 = blk * column_block;
+                    const int64_t nc = std::min(column_block, wc - c0);
+                    for (int64_t y = 0; y < h; ++y) {
+                        const Cpx* s = src + y * wc + c0;
+                        for (int64_t c = 0; c < nc; ++c)
+                            gathered[c * h + y] = s[c];
+                    }
+                    for (int64_t c = 0; c < nc; ++c)
+                        cfg.run(gathered + c * h, result + c * h);
+                    for (int64_t y = 0; y < h; ++y) {
+                        Cpx* d = dst + y * wc + c0;
+                        for (int64_t c = 0; c < nc; ++c)
+                            d[c] = result[c * h + y];
+                    }
+                }
+            },
+            fft_paropt(nthreads));
+    }
+
+    KissCfg m_row_fwd, m_row_inv, m_col_fwd, m_col_inv;
+};
+
+}  // namespace
+
+std::unique_ptr<RealFft2D> make_kiss_fft(int width, int height)
+{
+    return std::make_unique<KissFft2D>(width, height);
+}
+
+}  // namespace texsyn

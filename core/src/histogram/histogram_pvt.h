@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: Apache-2.0
+// Private helpers shared by the histogram sources.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+namespace texsyn {
+namespace histogram_pvt {
+
+/// Q(u) of sorted values s[0..m-1]: linear interpolation at position u*m - 0.5, clamped.
+/// One definition, so match_histogram and QuantileTable::quantile agree bit for bit.
+inline float quantile_of_sorted(const float* s, size_t m, double u)
+{
+    const double pos = u * double(m) - 0.5;
+    if (!(pos > 0.0))  // also catches NaN u
+        return s[0];
+    if (pos >= double(m - 1))
+        return s[m - 1];
+    const size_t i = size_t(pos);
+    const double f = pos - double(i);
+    // a + f*(b - a) in double stays in [a, b] after rounding to float: monotone in u.
+    return float(double(s[i]) + f * (double(s[i + 1]) - double(s[i])));
+}
+
+/// Orders the n values by (value, index) with an O(n) LSD radix sort. Returns n packed
+/// entries (monotone key << 32 | index) in ascending order, or nullptr when all values
+/// are equal (the order is then the identity). The storage is thread-local scratch, valid
+/// until the calling thread's next call. Requires n < 2^32.
+const uint64_t* rank_by_value(const float* values, size_t n, int nthreads);
+
+}  // namespace histogram_pvt
+}  // namespace texsyn

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <texsyn/histogram.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "histogram_pvt.h"
+
+namespace texsyn {
+
+QuantileTable::QuantileTable(const float* values, size_t n)
+    : m_sorted(values, values + n)
+{
+    // Done once per band at analysis time, so std::sort is fast enough.
+    std::sort(m_sorted.begin(), m_sorted.end());
+}
+
+QuantileTable QuantileTable::from_sorted(std::vector<float> sorted)
+{
+    QuantileTable t;
+    t.m_sorted = std::move(sorted);
+    // Cheap guard: an unsorted table would make quantile() non-monotone.
+    if (!std::is_sorted(t.m_sorted.begin(), t.m_sorted.end()))
+        std::sort(t.m_sorted.begin(), t.m_sorted.end());
+    return t;
+}
+
+float QuantileTable::quantile(double u) const
+{
+    if (m_sorted.empty())
+        return 0.0f;
+    return histogram_pvt::quantile_of_sorted(m_sorted.data(), m_sorted.size(), u);
+}
+
+namespace {
+
+// Q(u) in double, the same piecewise-linear function as quantile() without the final
+// rounding to float, so that wasserstein1 of identical tables is exactly 0.
+double quantile_d(const std::vector<float>& s, double u)
+{
+    const size_t m = s.size();
+    const double pos = u * double(m) - 0.5;
+    if (!(pos > 0.0))
+        return s[0];
+    if (pos >= double(m - 1))
+        return s[m - 1];
+    const size_t i = size_t(pos);
+    const double f = pos - double(i);
+    return double(s[i]) + f * (double(s[i + 1]) - double(s[i]));
+}
+
+// Integral over [u0, u1] of |d| for d linear from d0 to d1.
+double abs_linear_integral(double d0, double d1, double len)
+{
+    if ((d0 >= 0) == (d1 >= 0) || d0 == 0 || d1 == 0)
+        return 0.5 * (std::abs(d0) + std::abs(d1)) * len;
+    // Sign change: two triangles meeting at the zero crossing.
+    return 0.5 * (d0 * d0 + d1 * d1) / (std::abs(d0) + std::abs(d1)) * len;
+}
+
+}  // namespace
+
+// Exact: both quantile functions are piecewise linear with knots at (k + 0.5)/m, so
+// integrating |Qa - Qb| over the merged knots (plus 0 and 1) is exact up to rounding.
+double wasserstein1(const QuantileTable& a, const QuantileTable& b)
+{
+    if (a.empty() || b.empty())
+        return 0.0;
+    const std::vector<float>& sa = a.sorted();
+    const std::vector<float>& sb = b.sorted();
+    const size_t ma = sa.size(), mb = sb.size();
+    size_t ka = 0, kb = 0;
+    double u0 = 0.0, d0 = double(sa.front()) - double(sb.front());
+    double sum = 0.0;
+    while (u0 < 1.0) {
+        const double ua = ka < ma ? (double(ka) + 0.5) / double(ma) : 1.0;
+        const double ub = kb < mb ? (double(kb) + 0.5) / double(mb) : 1.0;
+        const double u1 = std::min(ua, ub);
+        if (ua == u1)
+            ++ka;
+        if (ub == u1)
+            ++kb;
+        const double d1 = quantile_d(sa, u1) - quantile_d(sb, u1);
+        sum += abs_linear_integral(d0, d1, u1 - u0);
+        u0 = u1;
+        d0 = d1;
+    }
+    return sum;
+}
+
+}  // namespace texsyn

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: Apache-2.0
+// LSD radix ranking of floats: the per-iteration cost of exact histogram matching.
+#include "histogram_pvt.h"
+
+#include <array>
+#include <cstring>
+#include <vector>
+
+#include <OpenImageIO/parallel.h>
+
+namespace texsyn {
+namespace histogram_pvt {
+namespace {
+
+// 4 passes of 8 bits: measured faster than 3 x 11 bits, whose 2048 scatter streams
+// thrash L1 and the TLB (about 4 ms vs 1 ms per pass on 1M values).
+constexpr int kBits = 8;
+constexpr int kPasses = 4;
+constexpr uint32_t kBuckets = 1u << kBits;
+// Fixed chunking of the counting pass, so the work split never depends on nthreads
+// (the counts are integers, so the sum is exact in any case).
+constexpr size_t kChunk = size_t(1) << 16;
+
+using Histograms = std::array<uint32_t, kPasses * kBuckets>;
+
+// Float bits -> uint32 whose unsigned order is the float order: negatives are inverted,
+// positives get the sign bit. -0 is first mapped to +0 so that they tie (and are ranked by
+// index), as a value comparison would. Branch-free: signs of a band are random, and a
+// mispredicted branch per value tripled the cost of the first pass.
+inline uint32_t monotone_key(float v)
+{
+    uint32_t u;
+    std::memcpy(&u, &v, sizeof u);
+    u &= ~(uint32_t(u == 0x80000000u) << 31);
+    const uint32_t mask = uint32_t(-int32_t(u >> 31)) | 0x80000000u;
+    return u ^ mask;
+}
+
+inline uint32_t digit(uint32_t key, int pass)
+{
+    return (key >> (pass * kBits)) & (kBuckets - 1);
+}
+
+struct Scratch {
+    std::vector<uint64_t> a, b;
+    std::vector<Histograms> chunk_hist;
+};
+thread_local Scratch tl_scratch;
+
+void count_digits(const float* values, size_t n, Histograms& total, Scratch& s, int nthreads)
+{
+    const size_t nchunks = (n + kChunk - 1) / kChunk;
+    s.chunk_hist.resize(nchunks);
+    OIIO::parallel_for_chunked(
+        0, int64_t(n), int64_t(kChunk),
+        [&](int64_t begin, int64_t end) {
+            Histograms& h = s.chunk_hist[size_t(begin) / kChunk];
+            h.fill(0);
+            for (int64_t i = begin; i < end; ++i) {
+                const uint32_t key = monotone_key(values[i]);
+                for (int p = 0; p < kPasses; ++p)
+                    ++h[p * kBuckets + digit(key, p)];
+            }
+        },
+        OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+    total.fill(0);
+    for (const Histograms& h : s.chunk_hist)
+        for (size_t j = 0; j < total.size(); ++j)
+            total[j] += h[j];
+}
+
+}  // namespace
+
+const uint64_t* rank_by_value(const float* values, size_t n, int nthreads)
+{
+    Scratch& s = tl_scratch;
+    Histograms hist;
+    count_digits(values, n, hist, s, nthreads);
+    s.a.resize(n);
+    s.b.resize(n);
+
+    const uint32_t first_key = monotone_key(values[0]);
+    const uint64_t* src = nullptr;  // nullptr: read keys from `values` in index order
+    uint64_t* dst = s.a.data();
+    std::array<size_t, kBuckets> offset;
+    for (int p = 0; p < kPasses; ++p) {
+        const uint32_t* h = hist.data() + p * kBuckets;
+        if (h[digit(first_key, p)] == n)
+            continue;  // every key has this digit: a stable pass would not move anything
+        size_t sum = 0;
+        for (uint32_t d = 0; d < kBuckets; ++d) {
+            offset[d] = sum;
+            sum += h[d];
+        }
+        // Stable scatter, so equal keys keep index order: ties are ranked by index.
+        if (!src) {
+            for (size_t i = 0; i < n; ++i) {
+                const uint32_t key = monotone_key(values[i]);
+                dst[offset[digit(key, p)]++] = (uint64_t(key) << 32) | uint64_t(i);
+            }
+        } else {
+            for (size_t i = 0; i < n; ++i) {
+                const uint64_t e = src[i];
+                dst[offset[digit(uint32_t(e >> 32), p)]++] = e;
+            }
+        }
+        src = dst;
+        dst = (dst == s.a.data()) ? s.b.data() : s.a.data();
+    }
+    return src;
+}
+
+}  // namespace histogram_pvt
+}  // namespace texsyn

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <texsyn/io.h>
+
+#include <atomic>
+#include <filesystem>
+#include <system_error>
+
+#include <unistd.h>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+namespace texsyn {
+
+namespace fs = std::filesystem;
+
+bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error)
+{
+    std::error_code ec;
+    if (!fs::exists(filename, ec)) {
+        error = filename + ": no such file";
+        return false;
+    }
+    if (fs::is_directory(filename, ec)) {
+        error = filename + ": is a directory, not an image";
+        return false;
+    }
+    OIIO::ImageBuf buf(filename);
+    // force=true reads all pixels now, so truncation is found here and not mid-synthesis.
+    if (!buf.read(0, 0, true, OIIO::TypeFloat)) {
+        std::string msg = buf.geterror();
+        if (msg.empty())
+            msg = OIIO::geterror();
+        error = filename + ": cannot read image" + (msg.empty() ? "" : " (" + msg + ")");
+        // OIIO messages can span lines; the tool prints one line per error.
+        for (char& c : error)
+            if (c == '\n')
+                c = ' ';
+        return false;
+    }
+    dst = std::move(buf);
+    return true;
+}
+
+std::string temporary_path_for(const std::string& filename)
+{
+    static std::atomic<unsigned> counter { 0 };
+    fs::path p(filename);
+    std::string name = "." + p.stem().string() + ".texsyn-tmp" + std::to_string(::getpid())
+                       + "-" + std::to_string(counter++) + p.extension().string();
+    return (p.parent_path() / name).string();
+}
+
+bool commit_file(const std::string& temporary, const std::string& filename, std::string& error)
+{
+    std::error_code ec;
+    fs::rename(temporary, filename, ec);
+    if (ec) {
+        fs::remove(temporary, ec);
+        error = filename + ": cannot write (" + ec.message() + ")";
+        return false;
+    }
+    return true;
+}
+
+bool same_file(const std::string& a, const std::string& b)
+{
+    std::error_code ec;
+    bool eq = fs::equivalent(a, b, ec);
+    return !ec && eq;
+}
+
+bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename,
+                        OIIO::TypeDesc format, std::string& error)
+{
+    std::error_code ec;
+    fs::path parent = fs::path(filename).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec)) {
+        error = filename + ": cannot write (directory " + parent.string() + " does not exist)";
+        return false;
+    }
+    auto out = OIIO::ImageOutput::create(filename);
+    if (!out) {
+        (void)OIIO::geterror();
+        error = filename + ": cannot write (no image format for extension '"
+                + fs::path(filename).extension().string() + "')";
+        return false;
+    }
+    out.reset();
+    std::string tmp = temporary_path_for(filename);
+    if (!image.write(tmp, format)) {
+        std::string msg = image.geterror();
+        for (char& c : msg)
+            if (c == '\n')
+                c = ' ';
+        fs::remove(tmp, ec);
+        error = filename + ": cannot write (" + msg + ")";
+        return false;
+    }
+    return commit_file(tmp, filename, error);
+}
+
+}  // namespace texsyn

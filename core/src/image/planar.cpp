@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <texsyn/image.h>
+
+#include <cmath>
+
+
+namespace texsyn {
+
+Plane::Plane(int width, int height, float value)
+    : m_width(width)
+    , m_height(height)
+    , m_data(size_t(width) * size_t(height), value)
+{
+}
+
+int wrap_coordinate(int i, int n, Boundary b)
+{
+    if (i >= 0 && i < n)
+        return i;
+    if (n == 1)
+        return 0;
+    if (b == Boundary::Circular) {
+        int r = i % n;
+        return r < 0 ? r + n : r;
+    }
+    // Whole-sample mirror about the edge pixels: period 2n-2, no repeated edge value.
+    int period = 2 * n - 2;
+    int r = i % period;
+    if (r < 0)
+        r += period;
+    return r < n ? r : period - r;
+}
+
+float Plane::at(int x, int y, Boundary b) const
+{
+    return (*this)(wrap_coordinate(x, m_width, b), wrap_coordinate(y, m_height, b));
+}
+
+bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::string& error)
+{
+    if (src.has_error()) {
+        error = src.geterror();
+        return false;
+    }
+    const OIIO::ImageSpec& spec = src.spec();
+    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) {
+        error = "image is empty";
+        return false;
+    }
+    if (spec.depth > 1) {
+        error = "volume images (depth " + std::to_string(spec.depth) + ") are not supported";
+        return false;
+    }
+    const int w = spec.width, h = spec.height, nc = spec.nchannels;
+    std::vector<float> pixels(size_t(w) * size_t(h) * size_t(nc));
+    if (!src.get_pixels(src.roi(), OIIO::TypeFloat, pixels.data())) {
+        error = src.geterror();
+        return false;
+    }
+    PlanarImage out;
+    out.alpha_channel = spec.alpha_channel;
+    // Colour channels first, alpha last: algorithms rely on this order.
+    if (out.alpha_channel >= 0 && out.alpha_channel != nc - 1)
+        out.alpha_channel = -1;
+    for (int c = 0; c < nc; ++c) {
+        out.channels.emplace_back(w, h);
+        out.channel_names.push_back(c < int(spec.channelnames.size()) ? spec.channelnames[c]
+                                                                       : "c" + std::to_string(c));
+    }
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const float* p = &pixels[(size_t(y) * w + x) * nc];
+            for (int c = 0; c < nc; ++c) {
+                if (!std::isfinite(p[c])) {
+                    error = "pixel (" + std::to_string(x + spec.x) + ", "
+                            + std::to_string(y + spec.y) + ") channel "
+                            + out.channel_names[c] + " is "
+                            + (std::isnan(p[c]) ? "NaN" : "infinite")
+                            + "; texsyn needs finite pixel values";
+                    return false;
+                }
+                out.channels[c](x, y) = p[c];
+            }
+            if (out.alpha_channel >= 0) {
+                float a = p[out.alpha_channel];
+                if (a > 0.0f && a != 1.0f)
+                    for (int c = 0; c < out.alpha_channel; ++c)
+                        out.channels[c](x, y) /= a;
+            }
+        }
+    }
+    dst = std::move(out);
+    return true;
+}
+
+void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst)
+{
+    const int w = src.width(), h = src.height(), nc = src.nchannels();
+    OIIO::ImageSpec spec(w, h, nc, OIIO::TypeFloat);
+    spec.channelnames = src.channel_names;
+    spec.alpha_channel = src.alpha_channel;
+    dst.reset(spec);
+    std::vector<float> pixels(size_t(w) * size_t(h) * size_t(nc));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* p = &pixels[(size_t(y) * w + x) * nc];
+            float a = src.alpha_channel >= 0 ? src.channels[src.alpha_channel](x, y) : 1.0f;
+            for (int c = 0; c < nc; ++c) {
+                float v = src.channels[c](x, y);
+                p[c] = (src.alpha_channel >= 0 && c != src.alpha_channel) ? v * a : v;
+            }
+        }
+    dst.set_pixels(dst.roi(), OIIO::TypeFloat, pixels.data());
+}
+
+}  // namespace texsyn

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <texsyn/options.h>
+
+#include <charconv>
+#include <cstdint>
+
+namespace texsyn {
+
+bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, int64_t hi,
+                      int64_t& value, std::string& error)
+{
+    int64_t v = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size()) {
+        error = std::string(name) + "=" + std::string(text) + " is not an integer";
+        return false;
+    }
+    if (v < lo || v > hi) {
+        error = std::string(name) + "=" + std::string(text) + " is out of range ("
+                + std::to_string(lo) + ".." + std::to_string(hi) + ")";
+        return false;
+    }
+    value = v;
+    return true;
+}
+
+bool parse_size_option(std::string_view name, std::string_view text, int hi, int& width,
+                       int& height, std::string& error)
+{
+    size_t x = text.find('x');
+    int64_t w = 0, h = 0;
+    std::string ignored;
+    if (x == std::string_view::npos
+        || !parse_int_option(name, text.substr(0, x), 0, INT64_MAX, w, ignored)
+        || !parse_int_option(name, text.substr(x + 1), 0, INT64_MAX, h, ignored)) {
+        error = std::string(name) + "=" + std::string(text)
+                + " is not a size (expected WxH, e.g. 1024x1024)";
+        return false;
+    }
+    if (w < 1 || h < 1 || w > hi || h > hi) {
+        error = std::string(name) + "=" + std::string(text) + " is out of range (each side 1.."
+                + std::to_string(hi) + ")";
+        return false;
+    }
+    width = int(w);
+    height = int(h);
+    return true;
+}
+
+bool split_option_string(std::string_view text,
+                         std::vector<std::pair<std::string, std::string>>& pairs,
+                         std::string& error)
+{
+    pairs.clear();
+    while (!text.empty()) {
+        size_t colon = text.find(':');
+        std::string_view piece = text.substr(0, colon);
+        size_t eq = piece.find('=');
+        if (eq == std::string_view::npos || eq == 0) {
+            error = "malformed option '" + std::string(piece) + "' (expected name=value)";
+            return false;
+        }
+        pairs.emplace_back(std::string(piece.substr(0, eq)), std::string(piece.substr(eq + 1)));
+        if (colon == std::string_view::npos)
+            break;
+        text.remove_prefix(colon + 1);
+    }
+    return true;
+}
+
+}  // namespace texsyn

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Regenerates the pictures in docs/images with the tool itself.
+# usage: docs/make_pictures.sh BUILD/oiiotool-ext/texsyn
+set -euo pipefail
+texsyn=$(realpath "$1")
+cd "$(dirname "$0")"
+samples=../data/samples
+out=images
+mkdir -p "$out"
+unset OCIO
+oiiotool "$samples/rust.png" -o "$out/rust_sample.png"
+"$texsyn" --seed 1 "$samples/rust.png" --pyramid:size=512x512 -o "$out/rust_512.png"
+"$texsyn" --seed 1 "$samples/marble_pink.png" --pyramid:size=256x256 -o "$out/marble_steerable.png"
+"$texsyn" --seed 1 "$samples/marble_pink.png" --pyramid:size=256x256:pyramid=laplacian -o "$out/marble_laplacian.png"
+oiiotool "$samples/marble_pink.png" -o "$out/marble_sample.png"
+"$texsyn" --seed 2 "$samples/stucco_yellow.png" --pyramid:size=192x192 -o "$out/stucco_tile.png"
+oiiotool "$out/stucco_tile.png" "$out/stucco_tile.png" "$out/stucco_tile.png" "$out/stucco_tile.png" \
+    --mosaic 2x2 -o "$out/stucco_tiled_2x2.png"
+"$texsyn" --seed 1 "$samples/rust.png" --pyramid:size=512x512:iterations=0 -o "$out/rust_iter0.png"
+"$texsyn" --seed 1 "$samples/rust.png" --pyramid:size=512x512:iterations=1 -o "$out/rust_iter1.png"
+rm -f "$out/stucco_tile.png"
+ls -la "$out"

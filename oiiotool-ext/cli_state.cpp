@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "cli_state.h"
+
+namespace texsyn::cli {
+
+const ColorConfig& CliState::colors()
+{
+    if (!m_colors) {
+        std::string error;
+        m_colors = ColorConfig::load(colorconfig_path, error);
+        if (!m_colors)
+            throw CliError(error);
+    }
+    return *m_colors;
+}
+
+StackImage& CliState::top(const std::string& command)
+{
+    if (stack.empty())
+        throw CliError(command + " : no current image (give an input file before it)");
+    return stack.back();
+}
+
+StackImage CliState::pop(const std::string& command)
+{
+    StackImage img = std::move(top(command));
+    stack.pop_back();
+    return img;
+}
+
+}  // namespace texsyn::cli

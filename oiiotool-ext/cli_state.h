@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: Apache-2.0
+// The state of one `texsyn` run: global options and the image stack (oiiotool's model).
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <texsyn/color.h>
+#include <texsyn/synthesis.h>
+
+namespace texsyn::cli {
+
+/// An error to report as "texsyn ERROR: <what>" with exit code 1.
+struct CliError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// One image on the stack. Pixels are float and scene-linear.
+struct StackImage {
+    OIIO::ImageBuf buf;
+    OIIO::ImageBuf file_pixels;         ///< an input's pixels as read (for --iscolorspace)
+    std::string source;                 ///< the sample file it came from
+    std::string input_colorspace;       ///< the space the sample file was in
+    std::string output_colorspace;      ///< set by --tocolorspace; "" = default policy
+    std::vector<NamedImage> subbands;   ///< filled when --subbands is on
+};
+
+struct CliState {
+    // Global options.
+    uint64_t seed = 0;
+    int threads = 0;
+    bool verbose = false;
+    bool subbands = false;
+    bool progress = false;              ///< -v or stderr is a terminal
+    std::string colorconfig_path;
+    std::string pending_iscolorspace;   ///< --iscolorspace seen before any input
+    std::string pending_tocolorspace;   ///< --tocolorspace seen before any image
+    std::string data_format;            ///< -d: output pixel type, "" = per format default
+    std::string command_line;
+
+    std::vector<StackImage> stack;
+
+    /// The colour config, loaded on first use (so --colorconfig anywhere before the first
+    /// input counts).
+    const ColorConfig& colors();
+
+    /// The top image; throws CliError naming `command` if the stack is empty.
+    StackImage& top(const std::string& command);
+    /// Pops the top image; throws CliError naming `command` if the stack is empty.
+    StackImage pop(const std::string& command);
+
+private:
+    std::unique_ptr<ColorConfig> m_colors;
+};
+
+/// Reads `filename`, converts it to scene-linear float, and pushes it.
+void push_input(CliState& state, const std::string& filename);
+
+/// Declares the colour space of the input on top of the stack and re-linearises it.
+void reinterpret_input(CliState& state, const std::string& colorspace);
+
+/// Writes the top image to `filename` (colour space and pixel type per the policy in
+/// docs/colour.md), atomically, with synth:* metadata; with --subbands writes the
+/// multi-part inspection EXR.
+void write_output(CliState& state, const std::string& filename);
+
+/// --pyramid[:name=value…]: pops a sample, pushes the synthesis.
+void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// Prints --help, --list-methods and --version text to stdout.
+void print_help();
+void print_methods();
+void print_version();
+
+}  // namespace texsyn::cli

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+// --help, --list-methods, --version. Option lists come from the option tables.
+#include "cli_state.h"
+
+#include <cstdio>
+
+namespace texsyn::cli {
+
+namespace {
+
+template <class T> void print_table(const OptionTable<T>& table, const T& defaults)
+{
+    for (const auto& f : table.fields())
+        std::printf("        %-13s %s\n        %-13s (%s; default %s)\n", f.name.c_str(),
+                    f.help.c_str(), "", f.allowed.c_str(), f.format(defaults).c_str());
+}
+
+}  // namespace
+
+void print_help()
+{
+    std::printf(
+        "texsyn %s -- texture synthesis for VFX pipelines\n"
+        "Usage: texsyn [global options] ARGS...\n"
+        "ARGS are processed left to right on an image stack, as in oiiotool: a file name\n"
+        "reads an image, a command pops its inputs and pushes its result, -o writes the top.\n"
+        "\n"
+        "Global options:\n"
+        "    --help                Print this help and exit\n"
+        "    --version             Print the version and exit\n"
+        "    --list-methods        List the synthesis methods and exit\n"
+        "    -v                    Verbose: progress and timings on stderr\n"
+        "    --seed N              Random seed, 0..2147483647 (default 0)\n"
+        "    --threads N           Worker threads, 0 = all cores (default 0); the result\n"
+        "                          does not depend on it\n"
+        "    --colorconfig FILE    OCIO config (default: $OCIO, else texsyn's bundled config)\n"
+        "    --iscolorspace NAME   Colour space of the current (or next) input image\n"
+        "    --tocolorspace NAME   Colour space to write the current (or every) image in\n"
+        "                          (default: scene_linear for float outputs such as EXR,\n"
+        "                          the input's space for integer outputs such as PNG)\n"
+        "    -d TYPE               Output pixel type: uint8, uint16, half, float\n"
+        "                          (default: half for EXR, uint8 otherwise)\n"
+        "    --subbands            -o writes a multi-part EXR: part 'synth' plus every\n"
+        "                          pyramid subband of the sample and the synthesis\n"
+        "\n"
+        "Commands:\n"
+        "    -o FILE               Write the current image to FILE (atomically)\n"
+        "    --pyramid[:name=value...]\n"
+        "                          Heeger & Bergen 1995 pyramid synthesis of the current\n"
+        "                          image. Options:\n",
+        version());
+    print_table(PyramidOptions::table(), PyramidOptions());
+    std::printf(
+        "\nExample:\n"
+        "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o rust_big.exr\n");
+}
+
+void print_methods()
+{
+    std::printf("pyramid    Heeger & Bergen 1995: pyramid-based histogram matching "
+                "(steerable or Laplacian), seamless\n");
+}
+
+void print_version()
+{
+    std::printf("texsyn %s\n", version());
+}
+
+}  // namespace texsyn::cli

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: Apache-2.0
+// --pyramid: Heeger & Bergen pyramid synthesis.
+#include "cli_state.h"
+
+#include <chrono>
+#include <cstdio>
+
+namespace texsyn::cli {
+
+namespace {
+
+void show_progress(float fraction)
+{
+    std::fprintf(stderr, "\rtexsyn: --pyramid %3d%%", int(fraction * 100.0f + 0.5f));
+    std::fflush(stderr);
+}
+
+}  // namespace
+
+void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers)
+{
+    PyramidOptions opt;
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::string error;
+    if (!split_option_string(modifiers, pairs, error))
+        throw CliError(command + " : " + error);
+    for (auto& [name, value] : pairs)
+        if (!PyramidOptions::table().set(opt, name, value, error))
+            throw CliError(command + " : " + error);
+    opt.seed = state.seed;
+    opt.nthreads = state.threads;
+    if (state.progress)
+        opt.progress = show_progress;
+
+    StackImage sample = state.pop(command);
+    StackImage result;
+    result.source = sample.source;
+    result.input_colorspace = sample.input_colorspace;
+    result.output_colorspace = sample.output_colorspace;
+    auto start = std::chrono::steady_clock::now();
+    bool ok = pyramid_synthesize(result.buf, sample.buf, opt,
+                                 state.subbands ? &result.subbands : nullptr);
+    if (state.progress)
+        std::fprintf(stderr, "\n");
+    if (!ok)
+        throw CliError(command + " : " + result.buf.geterror());
+    if (state.verbose) {
+        double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                          .count();
+        std::fprintf(stderr, "texsyn: --pyramid %s from %s in %.2f s\n",
+                     result.buf.spec().get_string_attribute("synth:options").c_str(),
+                     sample.source.c_str(), secs);
+    }
+    state.stack.push_back(std::move(result));
+}
+
+}  // namespace texsyn::cli

@@ -1,0 +1,382 @@
+// SPDX-License-Identifier: Apache-2.0
+// End-to-end runs of the built `texsyn` tool: good runs, colour policy, outputs, and every
+// bad-input case (exit code, first stderr line, no output written, input unchanged).
+#include <texsyn/color.h>
+#include <texsyn/io.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <sys/wait.h>
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <gtest/gtest.h>
+
+namespace fs = std::filesystem;
+using namespace texsyn;
+
+namespace {
+
+struct CliRun {
+    int status = -1;
+    std::string out, err;
+    std::string first_err_line() const { return err.substr(0, err.find('\n')); }
+};
+
+std::string quote(const std::string& s)
+{
+    return "'" + s + "'";
+}
+
+std::string slurp(const fs::path& p)
+{
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir = fs::temp_directory_path()
+              / (std::string("texsyn_cli_") + info->test_suite_name() + "_" + info->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        fs::copy_file(sample_path("stucco_yellow.png"), dir / "stucco.png");
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    static std::string sample_path(const std::string& name)
+    {
+        return std::string(TEXSYN_TEST_DATA) + "/" + name;
+    }
+
+    CliRun texsyn(const std::string& args, const std::string& env = "")
+    {
+        std::string cmd = "cd " + quote(dir.string()) + " && " + env + " " + quote(TEXSYN_EXE)
+                          + " " + args + " > stdout.txt 2> stderr.txt";
+        CliRun r;
+        int rc = std::system(cmd.c_str());
+        r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);
+        r.out = slurp(dir / "stdout.txt");
+        r.err = slurp(dir / "stderr.txt");
+        fs::remove(dir / "stdout.txt");
+        fs::remove(dir / "stderr.txt");
+        return r;
+    }
+
+    // Files in the test directory other than the given inputs.
+    std::vector<std::string> outputs(std::initializer_list<std::string> inputs = { "stucco.png" })
+    {
+        std::vector<std::string> names;
+        for (auto& e : fs::directory_iterator(dir)) {
+            std::string n = e.path().filename().string();
+            if (std::find(inputs.begin(), inputs.end(), n) == inputs.end())
+                names.push_back(n);
+        }
+        return names;
+    }
+
+    void expect_failure(const std::string& args, const std::string& first_line,
+                        std::initializer_list<std::string> inputs = { "stucco.png" })
+    {
+        std::string before = slurp(dir / "stucco.png");
+        CliRun r = texsyn(args);
+        EXPECT_EQ(r.status, 1) << args;
+        EXPECT_EQ(r.first_err_line(), first_line) << args;
+        EXPECT_TRUE(outputs(inputs).empty()) << args << ": left " << outputs(inputs)[0];
+        EXPECT_EQ(slurp(dir / "stucco.png"), before) << args << " modified its input";
+    }
+
+    OIIO::ImageBuf read(const std::string& name)
+    {
+        OIIO::ImageBuf buf;
+        std::string error;
+        EXPECT_TRUE(read_image((dir / name).string(), buf, error)) << error;
+        return buf;
+    }
+
+    void write_sample(const std::string& name, int nchannels, OIIO::TypeDesc type,
+                      float special = 0.0f)
+    {
+        OIIO::ImageSpec spec(32, 32, nchannels, OIIO::TypeFloat);
+        OIIO::ImageBuf buf(spec);
+        OIIO::ImageBufAlgo::noise(buf, "uniform", 0.1f, 0.9f, false, 5);
+        if (special != 0.0f) {
+            std::vector<float> px(nchannels, special);
+            buf.setpixel(3, 4, px.data());
+        }
+        ASSERT_TRUE(buf.write((dir / name).string(), type)) << buf.geterror();
+    }
+
+    fs::path dir;
+};
+
+}  // namespace
+
+TEST_F(Cli, SynthesizesAnExrWithMetadata)
+{
+    CliRun r = texsyn("stucco.png --pyramid:size=96x64:iterations=1 -o out.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");  // quiet in pipelines
+    OIIO::ImageBuf out = read("out.exr");
+    EXPECT_EQ(out.spec().width, 96);
+    EXPECT_EQ(out.spec().height, 64);
+    EXPECT_EQ(out.nchannels(), 3);
+    const OIIO::ImageSpec& s = out.spec();
+    EXPECT_EQ(s.get_string_attribute("synth:method"), "pyramid");
+    EXPECT_EQ(s.get_string_attribute("synth:sample"), "stucco.png");
+    EXPECT_EQ(s.get_string_attribute("synth:colorspace"), "Linear Rec.709 (sRGB)");
+    EXPECT_EQ(s.get_int_attribute("synth:seed"), 0);
+    EXPECT_NE(s.get_string_attribute("synth:version"), "");
+    EXPECT_EQ(s.get_string_attribute("synth:options").find("size=96x64:iterations=1:"), 0u);
+    EXPECT_EQ(out.nativespec().format, OIIO::TypeHalf);
+}
+
+TEST_F(Cli, StatisticsAreTakenInSceneLinear)
+{
+    CliRun r = texsyn("stucco.png --pyramid:size=128x128:iterations=2 -d float -o out.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    OIIO::ImageBuf file = read("stucco.png");
+    PlanarImage lin;
+    std::string error;
+    ASSERT_TRUE(planes_from_imagebuf(file, lin, error));
+    PlanarImage encoded = lin;
+    auto cc = ColorConfig::load(TEXSYN_BUNDLED_OCIO_CONFIG, error);
+    ASSERT_TRUE(cc->convert(lin, "sRGB - Texture", cc->scene_linear(), error)) << error;
+    auto out = OIIO::ImageBufAlgo::computePixelStats(read("out.exr"));
+    for (int c = 0; c < 3; ++c) {
+        double lin_mean = 0.0, enc_mean = 0.0;
+        for (size_t i = 0; i < lin.channels[c].size(); ++i) {
+            lin_mean += lin.channels[c].data()[i];
+            enc_mean += encoded.channels[c].data()[i];
+        }
+        lin_mean /= double(lin.channels[c].size());
+        enc_mean /= double(lin.channels[c].size());
+        // Exact histogram matching gives the sample's linear mean up to quantile spacing.
+        EXPECT_NEAR(out.avg[c], lin_mean, 2e-3) << c;
+        // ... and not the mean of the encoded values, which differs by far more.
+        EXPECT_GT(std::abs(out.avg[c] - enc_mean), 0.05) << c;
+    }
+}
+
+TEST_F(Cli, IntegerOutputsAreInTheInputsSpace)
+{
+    CliRun r = texsyn("stucco.png --pyramid:size=128x128:iterations=2 -o out.png");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto in = OIIO::ImageBufAlgo::computePixelStats(read("stucco.png"));
+    auto out = OIIO::ImageBufAlgo::computePixelStats(read("out.png"));
+    for (int c = 0; c < 3; ++c)  // 8-bit quantisation and rounding: within 2 code values
+        EXPECT_NEAR(out.avg[c], in.avg[c], 2.0 / 255.0) << c;
+    EXPECT_EQ(read("out.png").nativespec().format, OIIO::TypeUInt8);
+}
+
+TEST_F(Cli, ColourSpaceOptionsBehaveAsInOiiotool)
+{
+    ASSERT_EQ(texsyn("stucco.png --pyramid:size=64x64:iterations=1 -d float -o lin.exr").status, 0);
+    CliRun r = texsyn("stucco.png --pyramid:size=64x64:iterations=1 --tocolorspace ACEScg "
+                   "-d float -o cg.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read("cg.exr").spec().get_string_attribute("synth:colorspace"), "ACEScg");
+    // ACEScg of a linear Rec.709 pixel: the matrix in ECOSYSTEM.md §4.
+    OIIO::ImageBuf lin = read("lin.exr"), cg = read("cg.exr");
+    float a[3], b[3];
+    lin.getpixel(10, 20, a);
+    cg.getpixel(10, 20, b);
+    EXPECT_NEAR(b[0], 0.6130974f * a[0] + 0.3395231f * a[1] + 0.0473795f * a[2], 1e-4f);
+
+    // Declaring the PNG as Raw data skips the sRGB decode: the output mean is the encoded one.
+    r = texsyn("stucco.png --iscolorspace Raw --pyramid:size=64x64:iterations=1 -d float -o raw.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto raw = OIIO::ImageBufAlgo::computePixelStats(read("raw.exr"));
+    auto png = OIIO::ImageBufAlgo::computePixelStats(read("stucco.png"));
+    EXPECT_NEAR(raw.avg[1], png.avg[1], 3e-3);
+    // --iscolorspace before the input applies to the next input.
+    r = texsyn("--iscolorspace Raw stucco.png --pyramid:size=64x64:iterations=1 -d float -o raw2.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(OIIO::ImageBufAlgo::computePixelHashSHA1(read("raw.exr")),
+              OIIO::ImageBufAlgo::computePixelHashSHA1(read("raw2.exr")));
+}
+
+TEST_F(Cli, OcioEnvironmentAndColorconfigAreHonoured)
+{
+    fs::copy_file(TEXSYN_BUNDLED_OCIO_CONFIG, dir / "my.ocio");
+    std::string base = "stucco.png --pyramid:size=64x64:iterations=1 -o ";
+    ASSERT_EQ(texsyn(base + "a.exr", "OCIO=my.ocio").status, 0);
+    ASSERT_EQ(texsyn("--colorconfig my.ocio " + base + "b.exr").status, 0);
+    CliRun r = texsyn(base + "c.exr", "OCIO=missing.ocio");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.first_err_line().find("texsyn ERROR: colour config 'missing.ocio'"), 0u) << r.err;
+    r = texsyn("--colorconfig stucco.png " + base + "d.exr");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.first_err_line().find("texsyn ERROR: colour config 'stucco.png'"), 0u) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "c.exr") || fs::exists(dir / "d.exr"));
+}
+
+TEST_F(Cli, SameSeedSameBitsAtAnyThreadCount)
+{
+    ASSERT_EQ(texsyn("--threads 1 --seed 4 stucco.png --pyramid:size=80x80:iterations=2 -d float -o a.exr").status, 0);
+    ASSERT_EQ(texsyn("--threads 2 --seed 4 stucco.png --pyramid:size=80x80:iterations=2 -d float -o b.exr").status, 0);
+    ASSERT_EQ(texsyn("--threads 2 --seed 5 stucco.png --pyramid:size=80x80:iterations=2 -d float -o c.exr").status, 0);
+    auto hash = [&](const char* f) { return OIIO::ImageBufAlgo::computePixelHashSHA1(read(f)); };
+    EXPECT_EQ(hash("a.exr"), hash("b.exr"));
+    EXPECT_NE(hash("a.exr"), hash("c.exr"));
+    EXPECT_EQ(read("c.exr").spec().get_int_attribute("synth:seed"), 5);
+}
+
+TEST_F(Cli, SubbandsEXRCanBeTakenApartWithStockOiiotool)
+{
+    CliRun r = texsyn("--subbands stucco.png --pyramid:size=128x96:iterations=1 -o bands.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string cmd = "cd " + quote(dir.string())
+                      + " && oiiotool bands.exr --subimage synth.s2.o1 --fullpixels -o band.exr"
+                        " && oiiotool bands.exr --subimage sample.lowpass --fullpixels -o low.exr";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    OIIO::ImageBuf band = read("band.exr");
+    EXPECT_EQ(band.spec().width, 32);  // scale 2 of a 128-wide synthesis
+    EXPECT_EQ(band.spec().height, 24);
+    EXPECT_EQ(band.spec().channelnames, (std::vector<std::string> { "pc0", "pc1", "pc2" }));
+    EXPECT_EQ(read("low.exr").spec().width, 8);  // 4 scales of a 128-wide sample
+    OIIO::ImageBuf synth((dir / "bands.exr").string());
+    EXPECT_EQ(synth.spec().get_string_attribute("oiio:subimagename"), "synth");
+    EXPECT_EQ(synth.nsubimages(), 1 + 2 * (1 + 4 * 4 + 1));
+}
+
+TEST_F(Cli, AllChannelCountsAndPixelTypesWork)
+{
+    const OIIO::TypeDesc types[] = { OIIO::TypeUInt8, OIIO::TypeUInt16, OIIO::TypeHalf,
+                                     OIIO::TypeFloat };
+    for (int nc = 1; nc <= 4; ++nc)
+        for (OIIO::TypeDesc t : types) {
+            std::string ext = (t == OIIO::TypeHalf || t == OIIO::TypeFloat) ? ".exr" : ".tif";
+            std::string in = "in" + std::to_string(nc) + t.c_str() + ext;
+            std::string out = "out" + std::to_string(nc) + t.c_str() + ".exr";
+            write_sample(in, nc, t);
+            CliRun r = texsyn(in + " --pyramid:size=40x40:iterations=1 -o " + out);
+            ASSERT_EQ(r.status, 0) << in << ": " << r.err;
+            EXPECT_EQ(read(out).nchannels(), nc) << in;
+        }
+}
+
+TEST_F(Cli, HelpVersionAndMethodList)
+{
+    CliRun r = texsyn("--help");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.out.find("--pyramid"), std::string::npos);
+    EXPECT_NE(r.out.find("orientations"), std::string::npos);
+    r = texsyn("--version");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out.find("texsyn "), 0u);
+    r = texsyn("--list-methods");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out.find("pyramid"), 0u);
+}
+
+TEST_F(Cli, VerboseReportsTheRun)
+{
+    CliRun r = texsyn("-v stucco.png --pyramid:size=32x32:iterations=1 -o out.exr");
+    ASSERT_EQ(r.status, 0);
+    EXPECT_NE(r.err.find("texsyn: --pyramid size=32x32"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, BadFilesAreRefused)
+{
+    expect_failure("missing.png --pyramid -o out.exr",
+                   "texsyn ERROR: missing.png: no such file");
+    std::ofstream(dir / "notes.png") << "this is not a PNG file\n";
+    expect_failure("notes.png --pyramid -o out.exr",
+                   "texsyn ERROR: notes.png: cannot read image (Invalid image file \"notes.png\": Not a "
+                   "PNG file)",
+                   { "stucco.png", "notes.png" });
+    std::string png = slurp(dir / "stucco.png");
+    std::ofstream(dir / "cut.png", std::ios::binary).write(png.data(), std::streamsize(png.size() / 3));
+    CliRun r = texsyn("cut.png --pyramid -o out.exr");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.first_err_line().find("texsyn ERROR: cut.png: cannot read image"), 0u) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.exr"));
+    fs::create_directory(dir / "folder");
+    expect_failure("folder --pyramid -o out.exr",
+                   "texsyn ERROR: folder: is a directory, not an image", { "stucco.png", "folder", "cut.png", "notes.png" });
+}
+
+TEST_F(Cli, NonFinitePixelsAreRefused)
+{
+    write_sample("nan.exr", 3, OIIO::TypeFloat, std::nanf(""));
+    write_sample("inf.exr", 3, OIIO::TypeHalf, INFINITY);
+    expect_failure("nan.exr --pyramid -o out.exr",
+                   "texsyn ERROR: nan.exr: pixel (3, 4) channel R is NaN; texsyn needs finite "
+                   "pixel values",
+                   { "stucco.png", "nan.exr", "inf.exr" });
+    expect_failure("inf.exr --pyramid -o out.exr",
+                   "texsyn ERROR: inf.exr: pixel (3, 4) channel R is infinite; texsyn needs "
+                   "finite pixel values",
+                   { "stucco.png", "nan.exr", "inf.exr" });
+}
+
+TEST_F(Cli, MalformedCommandsAndOptionsAreRefused)
+{
+    expect_failure("stucco.png --frobnicate -o out.exr",
+                   "texsyn ERROR: unknown command or option '--frobnicate' (see texsyn --help)");
+    expect_failure("stucco.png --pyramid:levels=3 -o out.exr",
+                   "texsyn ERROR: --pyramid : unknown option 'levels' (known: size, iterations, "
+                   "pyramid, scales, orientations, histogram, fft)");
+    expect_failure("stucco.png --pyramid:size=abc -o out.exr",
+                   "texsyn ERROR: --pyramid : size=abc is not a size (expected WxH, e.g. 1024x1024)");
+    expect_failure("stucco.png --pyramid:size=0x10 -o out.exr",
+                   "texsyn ERROR: --pyramid : size=0x10 is out of range (each side 1..1048576)");
+    expect_failure("stucco.png --pyramid:iterations=-1 -o out.exr",
+                   "texsyn ERROR: --pyramid : iterations=-1 is out of range (0..100)");
+    expect_failure("stucco.png --pyramid:orientations=99 -o out.exr",
+                   "texsyn ERROR: --pyramid : orientations=99 is out of range (1..8)");
+    expect_failure("stucco.png --pyramid:iterations -o out.exr",
+                   "texsyn ERROR: --pyramid : malformed option 'iterations' (expected name=value)");
+    expect_failure("--seed abc stucco.png --pyramid -o out.exr",
+                   "texsyn ERROR: --seed=abc is not an integer");
+    expect_failure("--threads -2 stucco.png --pyramid -o out.exr",
+                   "texsyn ERROR: --threads=-2 is out of range (0..1024)");
+    expect_failure("-d int7 stucco.png --pyramid -o out.exr",
+                   "texsyn ERROR: -d : unknown data format 'int7' (use uint8, uint16, half or float)");
+    expect_failure("stucco.png --pyramid -o", "texsyn ERROR: -o : missing argument");
+    expect_failure("stucco.png --pyramid", "texsyn ERROR: nothing to do: no -o FILE (see texsyn --help)");
+    expect_failure("--pyramid -o out.exr",
+                   "texsyn ERROR: --pyramid : no current image (give an input file before it)");
+    expect_failure("stucco.png --tocolorspace Nope --pyramid -o out.exr",
+                   "texsyn ERROR: --tocolorspace : unknown colour space 'Nope'");
+}
+
+TEST_F(Cli, ImpossibleSizesAreRefusedBeforeAllocating)
+{
+    CliRun r = texsyn("stucco.png --pyramid:size=200000x200000 -o out.exr");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.first_err_line().find(
+                  "texsyn ERROR: --pyramid : size=200000x200000 would need about "),
+              0u)
+        << r.err;
+    EXPECT_TRUE(outputs().empty());
+    write_sample("tiny.exr", 3, OIIO::TypeFloat);
+    expect_failure("tiny.exr --pyramid:scales=4 -o out.exr",
+                   "texsyn ERROR: --pyramid : scales=4 is too many for a 32x32 sample (at most 2)",
+                   { "stucco.png", "tiny.exr" });
+}
+
+TEST_F(Cli, OutputsAreCheckedBeforeAnyWork)
+{
+    expect_failure("stucco.png --pyramid -o stucco.png",
+                   "texsyn ERROR: -o stucco.png : refusing to overwrite the input stucco.png");
+    expect_failure("stucco.png --pyramid -o ./stucco.png",
+                   "texsyn ERROR: -o ./stucco.png : refusing to overwrite the input stucco.png");
+    expect_failure("stucco.png --pyramid -o no/such/dir/out.exr",
+                   "texsyn ERROR: -o no/such/dir/out.exr : directory no/such/dir does not exist");
+    expect_failure("stucco.png --pyramid -o out.unknownext",
+                   "texsyn ERROR: -o out.unknownext : no image format writes '.unknownext' files");
+    expect_failure("--subbands stucco.png --pyramid:size=32x32:iterations=1 -o out.png",
+                   "texsyn ERROR: -o out.png : --subbands writes a multi-part OpenEXR; name the "
+                   "output *.exr");
+}

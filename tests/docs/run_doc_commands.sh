@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Runs every texsyn / oiiotool / iinfo / exrinfo command line shown in ```sh blocks of a
+# Markdown file, in order, in a scratch directory with the sample files the docs name.
+# usage: run_doc_commands.sh TEXSYN_EXE REPO_DIR DOC.md WORK_DIR
+set -euo pipefail
+texsyn=$1 repo=$2 doc=$3 work=$4
+rm -rf "$work" && mkdir -p "$work/bin"
+ln -s "$texsyn" "$work/bin/texsyn"
+export PATH="$work/bin:$PATH"
+unset OCIO
+cd "$work"
+cp "$repo/data/samples/rust.png" rust.png
+cp "$repo/data/samples/marble_pink.png" marble.png
+cp "$repo/ocio-configs/config.ocio" studio.ocio
+oiiotool "$repo/data/samples/stucco_yellow.png" -d uint16 -o scan.tif
+
+# Extract the commands: inside ```sh fences, lines starting with a tool name, joined with
+# their backslash continuations.
+awk '
+  /^```sh/ { inblock = 1; next }
+  /^```/   { inblock = 0; next }
+  inblock {
+    line = $0
+    if (cont != "") { cmd = cmd " " line } else if (line ~ /^(texsyn|oiiotool|iinfo|exrinfo) /) { cmd = line } else { next }
+    if (line ~ /\\$/) { sub(/\\$/, "", cmd); cont = 1; next }
+    cont = ""; sub(/[ \t]+#.*$/, "", cmd); print cmd; cmd = ""
+  }' "$doc" > commands.txt
+
+count=0
+while IFS= read -r cmd; do
+  echo "+ $cmd"
+  bash -c "$cmd" > /dev/null
+  count=$((count + 1))
+done < commands.txt
+echo "$count commands from $(basename "$doc") ran"
+[ "$count" -gt 0 ]

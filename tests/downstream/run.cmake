@@ -1,0 +1,34 @@
+# SPDX-License-Identifier: Apache-2.0
+# ctest driver: installs the built texsyn into a scratch prefix, then configures, builds
+# and runs tests/downstream against that prefix only.
+# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR.
+file(REMOVE_RECURSE ${WORK_DIR})
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix
+                RESULT_VARIABLE rc OUTPUT_QUIET)
+if(rc)
+  message(FATAL_ERROR "install failed: ${rc}")
+endif()
+foreach(f bin/texsyn include/texsyn/synthesis.h share/texsyn/ocio/config.ocio
+          lib/cmake/texsyn/texsynConfig.cmake)
+  if(NOT EXISTS ${WORK_DIR}/prefix/${f})
+    message(FATAL_ERROR "install is missing ${f}")
+  endif()
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build
+                        -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release
+                RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "configuring the downstream project failed: ${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/build RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "building the downstream project failed: ${rc}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/build/downstream RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "the downstream program failed: ${rc}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/prefix/bin/texsyn --version RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "the installed texsyn does not run: ${rc}")
+endif()

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <texsyn/options.h>
+#include <texsyn/synthesis.h>
+
+#include <gtest/gtest.h>
+
+using namespace texsyn;
+
+TEST(Options, ParsesEveryPyramidOptionByName)
+{
+    PyramidOptions opt;
+    std::string error;
+    const auto& t = PyramidOptions::table();
+    ASSERT_TRUE(t.set(opt, "size", "640x480", error)) << error;
+    ASSERT_TRUE(t.set(opt, "iterations", "3", error)) << error;
+    ASSERT_TRUE(t.set(opt, "pyramid", "laplacian", error)) << error;
+    ASSERT_TRUE(t.set(opt, "scales", "3", error)) << error;
+    ASSERT_TRUE(t.set(opt, "orientations", "6", error)) << error;
+    ASSERT_TRUE(t.set(opt, "histogram", "bins256", error)) << error;
+    EXPECT_EQ(opt.width, 640);
+    EXPECT_EQ(opt.height, 480);
+    EXPECT_EQ(opt.iterations, 3);
+    EXPECT_EQ(opt.pyramid, PyramidKind::Laplacian);
+    EXPECT_EQ(opt.orientations, 6);
+    EXPECT_EQ(opt.histogram, HistogramMode::Bins256);
+    EXPECT_EQ(t.format(opt), "size=640x480:iterations=3:pyramid=laplacian:scales=3:"
+                             "orientations=6:histogram=bins256:fft=kiss");
+}
+
+TEST(Options, DefaultsAreThePapers)
+{
+    PyramidOptions opt;
+    EXPECT_EQ(opt.iterations, 5);
+    EXPECT_EQ(opt.orientations, 4);
+    EXPECT_EQ(opt.pyramid, PyramidKind::Steerable);
+    EXPECT_EQ(opt.histogram, HistogramMode::Exact);
+    std::string error;
+    EXPECT_TRUE(opt.validate(error)) << error;
+}
+
+TEST(Options, RejectsMalformedValuesWithoutChangingTheStruct)
+{
+    PyramidOptions opt;
+    std::string error;
+    const auto& t = PyramidOptions::table();
+    EXPECT_FALSE(t.set(opt, "size", "abc", error));
+    EXPECT_EQ(error, "size=abc is not a size (expected WxH, e.g. 1024x1024)");
+    EXPECT_FALSE(t.set(opt, "size", "0x10", error));
+    EXPECT_EQ(error, "size=0x10 is out of range (each side 1..1048576)");
+    EXPECT_FALSE(t.set(opt, "iterations", "-1", error));
+    EXPECT_EQ(error, "iterations=-1 is out of range (0..100)");
+    EXPECT_FALSE(t.set(opt, "orientations", "99", error));
+    EXPECT_EQ(error, "orientations=99 is out of range (1..8)");
+    EXPECT_FALSE(t.set(opt, "iterations", "5x", error));
+    EXPECT_EQ(error, "iterations=5x is not an integer");
+    EXPECT_FALSE(t.set(opt, "pyramid", "gaussian", error));
+    EXPECT_EQ(error, "pyramid=gaussian is not one of steerable|laplacian");
+    EXPECT_FALSE(t.set(opt, "levels", "3", error));
+    EXPECT_EQ(error.find("unknown option 'levels'"), 0u);
+    EXPECT_EQ(opt.iterations, 5);
+    EXPECT_EQ(opt.width, 0);
+}
+
+TEST(Options, SplitsModifierStrings)
+{
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::string error;
+    ASSERT_TRUE(split_option_string("size=8x8:iterations=2", pairs, error));
+    ASSERT_EQ(pairs.size(), 2u);
+    EXPECT_EQ(pairs[1].first, "iterations");
+    EXPECT_EQ(pairs[1].second, "2");
+    ASSERT_TRUE(split_option_string("", pairs, error));
+    EXPECT_TRUE(pairs.empty());
+    EXPECT_FALSE(split_option_string("size=8x8:iterations", pairs, error));
+    EXPECT_EQ(error, "malformed option 'iterations' (expected name=value)");
+    EXPECT_FALSE(split_option_string("=3", pairs, error));
+}
+
+TEST(Options, FftwIsRefusedWhenNotBuiltIn)
+{
+    PyramidOptions opt;
+    opt.fft = FftBackend::Fftw;
+    std::string error;
+    EXPECT_EQ(opt.validate(error), fft_backend_available(FftBackend::Fftw));
+}
