@@ -382,3 +382,39 @@ TEST(PeriodicComponent, RampBecomesSeamless)
     }
     EXPECT_NEAR(mp / p.size(), mu / u.size(), 1e-6);  // s-hat(0,0) = 0; float rounding
 }
+
+// transform_bands is build + modify + collapse with the bands processed in parallel: its
+// result and its bands must be bit-identical to the sequential composition.
+TEST(Pyramid, TransformBandsEqualsBuildModifyCollapse)
+{
+    auto modify = [](int b, Plane& band) {
+        for (size_t i = 0; i < band.size(); ++i)
+            band.data()[i] = std::tanh(2.0f * band.data()[i]) + 0.01f * float(b);
+    };
+    std::vector<std::unique_ptr<Pyramid>> pyramids;
+    pyramids.push_back(steerable(200, 120, 3, 4));
+    pyramids.push_back(steerable(131, 97, 2, 3));
+    pyramids.push_back(make_laplacian_pyramid(100, 60, 3, Boundary::Circular));
+    for (auto& pyr : pyramids) {
+        const Plane image = test_image(pyr->width(), pyr->height(), 3);
+        std::vector<Plane> bands;
+        pyr->build(image, bands, 1);
+        for (int b = 0; b < int(bands.size()); ++b)
+            modify(b, bands[size_t(b)]);
+        Plane expected;
+        pyr->collapse(bands, expected, 1);
+        for (int nthreads : { 1, 2, 4 }) {
+            Plane result = image;
+            std::vector<Plane> modified;
+            pyr->transform_bands(result, modified, modify, nthreads);
+            ASSERT_EQ(modified.size(), bands.size());
+            for (size_t b = 0; b < bands.size(); ++b)
+                ASSERT_TRUE(std::equal(bands[b].data(), bands[b].data() + bands[b].size(),
+                                       modified[b].data()))
+                    << pyr->band_names()[b] << " nthreads " << nthreads;
+            ASSERT_TRUE(std::equal(expected.data(), expected.data() + expected.size(),
+                                   result.data()))
+                << "nthreads " << nthreads;
+        }
+    }
+}

@@ -16,6 +16,7 @@
 //  - `nthreads` follows OIIO (0 = default pool size); results do not depend on it.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,17 @@ public:
     /// Reconstructs the image from bands shaped as build() makes them.
     virtual void collapse(const std::vector<Plane>& bands, Plane& image,
                           int nthreads = 0) const = 0;
+
+    /// Called once per band with (band index, band); may modify the band. Must be safe to
+    /// call concurrently for different bands.
+    using BandFunction = std::function<void(int, Plane&)>;
+
+    /// build(image, bands); modify(b, bands[b]) for every b; collapse(bands, image) — with
+    /// bit-identical results — but with the bands processed in parallel (each band's
+    /// transforms and `modify` run on one thread), which scales far better than
+    /// parallelising each transform. `bands` receives the modified bands.
+    virtual void transform_bands(Plane& image, std::vector<Plane>& bands,
+                                 const BandFunction& modify, int nthreads = 0) const;
 
 protected:
     Pyramid(int width, int height) : m_width(width), m_height(height) {}

@@ -173,7 +173,95 @@ public:
         m_levels[0].fft->inverse(y.data(), image.data(), nthreads);
     }
 
+    void transform_bands(Plane& image, std::vector<Plane>& bands, const BandFunction& modify,
+                         int nthreads) const override
+    {
+        assert(image.width() == m_width && image.height() == m_height);
+        const int scales = int(m_levels.size()) - 1;
+        const int nbands = int(m_names.size());
+        bands.resize(size_t(nbands));
+
+        // The low-pass spectrum of every level (cheap: one transform, then crops).
+        std::vector<std::vector<Cpx>> lows(size_t(scales) + 1);
+        std::vector<Cpx> x(m_levels[0].fft->spectrum_size());
+        m_levels[0].fft->forward(image.data(), x.data(), nthreads);
+        lows[0].resize(x.size());
+        for (size_t i = 0; i < x.size(); ++i)
+            lows[0][i] = m_lo0[i] * x[i];
+        for (int s = 0; s < scales; ++s) {
+            const Crop& c = m_crops[size_t(s)];
+            lows[size_t(s) + 1].assign(m_levels[size_t(s) + 1].fft->spectrum_size(), Cpx(0.0f));
+            for (size_t p = 0; p < c.src.size(); ++p)
+                lows[size_t(s) + 1][c.dst[p]] = c.down[p] * lows[size_t(s)][c.src[p]];
+        }
+
+        // Per band, on one thread: mask, inverse transform, modify, forward transform, adjoint
+        // mask. Each band's contribution is kept apart so the sum below has a fixed order.
+        const Cpx conj_phase = std::conj(m_phase);
+        std::vector<std::vector<Cpx>> contrib(static_cast<size_t>(nbands));
+        auto process = [&](int b) {
+            const int s       = band_level(b, scales);
+            const Level& lv   = m_levels[size_t(s)];
+            const size_t n    = lv.fft->spectrum_size();
+            std::vector<Cpx>& t = contrib[size_t(b)];
+            t.resize(n);
+            if (b == 0) {
+                for (size_t i = 0; i < n; ++i)
+                    t[i] = m_hi0[i] * x[i];
+            } else if (b == nbands - 1) {
+                t = lows[size_t(scales)];
+            } else {
+                const float* g = lv.oriented[size_t((b - 1) % m_norient)].data();
+                for (size_t i = 0; i < n; ++i)
+                    t[i] = (m_phase * g[i]) * lows[size_t(s)][i];
+            }
+            inverse(s, t, bands[size_t(b)], 1);
+            modify(b, bands[size_t(b)]);
+            forward(s, bands[size_t(b)], t, 1);
+            if (b > 0 && b < nbands - 1) {
+                const float* g = lv.oriented[size_t((b - 1) % m_norient)].data();
+                for (size_t i = 0; i < n; ++i)
+                    t[i] = (conj_phase * g[i]) * t[i];
+            }
+        };
+        // One task per band (chunk size 1), largest first, taken by whichever thread is free:
+        // bands differ 4x in size per level, so equal static chunks would not balance.
+        OIIO::parallel_for_chunked(
+            int64_t(0), int64_t(nbands), int64_t(1),
+            [&](int64_t b, int64_t) { process(int(b)); },
+            OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+
+        // Collapse, adding the contributions in the order collapse() does.
+        std::vector<Cpx> y = std::move(contrib[size_t(nbands) - 1]), acc;
+        for (int s = scales - 1; s >= 0; --s) {
+            const Crop& c = m_crops[size_t(s)];
+            acc.assign(m_levels[size_t(s)].fft->spectrum_size(), Cpx(0.0f));
+            for (size_t p = 0; p < c.src.size(); ++p)
+                acc[c.src[p]] = c.up[p] * y[c.dst[p]];
+            for (int k = 0; k < m_norient; ++k) {
+                const std::vector<Cpx>& t = contrib[1 + size_t(s) * m_norient + size_t(k)];
+                for (size_t i = 0; i < acc.size(); ++i)
+                    acc[i] += t[i];
+            }
+            std::swap(y, acc);
+        }
+        const std::vector<Cpx>& hi = contrib[0];
+        for (size_t i = 0; i < y.size(); ++i)
+            y[i] = m_lo0[i] * y[i] + m_hi0[i] * hi[i];
+        m_levels[0].fft->inverse(y.data(), image.data(), nthreads);
+    }
+
 private:
+    // The pyramid level whose size band b has.
+    int band_level(int b, int scales) const
+    {
+        if (b == 0)
+            return 0;
+        if (b == 1 + scales * m_norient)
+            return scales;
+        return (b - 1) / m_norient;
+    }
+
     struct Level {
         int w = 0, h = 0;
         std::unique_ptr<RealFft2D> fft;

@@ -74,10 +74,11 @@ Plane match_texture(const ChannelTarget& target, const Pyramid& synthesis, int i
     Plane image = seeded_noise(synthesis.width(), synthesis.height(), seed, stream);
     match_histogram(image, target.image, mode, nthreads);
     for (int it = 0; it < iterations; ++it) {
-        synthesis.build(image, bands, nthreads);
-        for (size_t b = 0; b < bands.size(); ++b)
-            match_histogram(bands[b], target.bands[b], mode, nthreads);
-        synthesis.collapse(bands, image, nthreads);
+        // Bands are matched in parallel, each on one thread (see transform_bands).
+        synthesis.transform_bands(
+            image, bands,
+            [&](int b, Plane& band) { match_histogram(band, target.bands[size_t(b)], mode, 1); },
+            nthreads);
         match_histogram(image, target.image, mode, nthreads);
         iteration_done(it + 1);
     }

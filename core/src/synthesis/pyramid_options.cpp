@@ -61,11 +61,12 @@ size_t pyramid_memory_estimate(int width, int height, int nchannels, const Pyram
     // Per output pixel, in bytes: the output planes, the float ImageBuf and its staging
     // copy (12 per channel), and for the one channel being synthesized its image (4), its
     // bands (4 per band pixel: K oriented bands over 4/3 of the area plus the two
-    // residuals) and two half spectra (8).
+    // residuals), one half spectrum per band (4 per band pixel) and the per-level low-pass
+    // spectra (about 6).
     double n = double(width) * double(height);
     double bands = opt.pyramid == PyramidKind::Steerable ? opt.orientations * 4.0 / 3.0 + 2.0
                                                          : 4.0 / 3.0;
-    double bytes = n * (12.0 * nchannels + 4.0 + 4.0 * bands + 8.0);
+    double bytes = n * (12.0 * nchannels + 4.0 + 8.0 * bands + 6.0);
     return bytes > 1e18 ? size_t(1e18) : size_t(bytes);
 }
 
