@@ -35,8 +35,8 @@ double peak_megabytes()
     return double(ru.ru_maxrss) / 1024.0;
 }
 
-void run_workload(benchmark::State& state, int sample_size, int out_size, PyramidKind kind,
-                  FftBackend fft)
+void run_workload(
+    benchmark::State& state, int sample_size, int out_size, PyramidKind kind, FftBackend fft)
 {
     if (!fft_backend_available(fft)) {
         state.SkipWithError("FFT backend not built in");
@@ -83,7 +83,7 @@ void register_workloads()
         }
 }
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv)
 {

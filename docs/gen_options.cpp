@@ -17,11 +17,11 @@ int main()
                 "| option | allowed | default | meaning |\n"
                 "| --- | --- | --- | --- |\n");
     for (const auto& f : PyramidOptions::table().fields()) {
-        std::string allowed;  // '|' separates choices but also Markdown table cells
+        std::string allowed; // '|' separates choices but also Markdown table cells
         for (char c : f.allowed)
             allowed += c == '|' ? std::string("\\|") : std::string(1, c);
         std::printf("| `%s` | %s | `%s` | %s |\n", f.name.c_str(), allowed.c_str(),
-                    f.format(defaults).c_str(), f.help.c_str());
+            f.format(defaults).c_str(), f.help.c_str());
     }
     return 0;
 }

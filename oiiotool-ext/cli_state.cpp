@@ -28,4 +28,4 @@ StackImage CliState::pop(const std::string& command)
     return img;
 }
 
-}  // namespace texsyn::cli
+} // namespace texsyn::cli

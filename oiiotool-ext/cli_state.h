@@ -22,11 +22,11 @@ struct CliError : std::runtime_error {
 /// One image on the stack. Pixels are float and scene-linear.
 struct StackImage {
     OIIO::ImageBuf buf;
-    OIIO::ImageBuf file_pixels;         ///< an input's pixels as read (for --iscolorspace)
-    std::string source;                 ///< the sample file it came from
-    std::string input_colorspace;       ///< the space the sample file was in
-    std::string output_colorspace;      ///< set by --tocolorspace; "" = default policy
-    std::vector<NamedImage> subbands;   ///< filled when --subbands is on
+    OIIO::ImageBuf file_pixels;       ///< an input's pixels as read (for --iscolorspace)
+    std::string source;               ///< the sample file it came from
+    std::string input_colorspace;     ///< the space the sample file was in
+    std::string output_colorspace;    ///< set by --tocolorspace; "" = default policy
+    std::vector<NamedImage> subbands; ///< filled when --subbands is on
 };
 
 struct CliState {
@@ -35,11 +35,11 @@ struct CliState {
     int threads = 0;
     bool verbose = false;
     bool subbands = false;
-    bool progress = false;              ///< -v or stderr is a terminal
+    bool progress = false; ///< -v or stderr is a terminal
     std::string colorconfig_path;
-    std::string pending_iscolorspace;   ///< --iscolorspace seen before any input
-    std::string pending_tocolorspace;   ///< --tocolorspace seen before any image
-    std::string data_format;            ///< -d: output pixel type, "" = per format default
+    std::string pending_iscolorspace; ///< --iscolorspace seen before any input
+    std::string pending_tocolorspace; ///< --tocolorspace seen before any image
+    std::string data_format;          ///< -d: output pixel type, "" = per format default
     std::string command_line;
 
     std::vector<StackImage> stack;
@@ -76,4 +76,4 @@ void print_help();
 void print_methods();
 void print_version();
 
-}  // namespace texsyn::cli
+} // namespace texsyn::cli

@@ -8,14 +8,15 @@ namespace texsyn::cli {
 
 namespace {
 
-template <class T> void print_table(const OptionTable<T>& table, const T& defaults)
+template <class T>
+void print_table(const OptionTable<T>& table, const T& defaults)
 {
     for (const auto& f : table.fields())
         std::printf("        %-13s %s\n        %-13s (%s; default %s)\n", f.name.c_str(),
-                    f.help.c_str(), "", f.allowed.c_str(), f.format(defaults).c_str());
+            f.help.c_str(), "", f.allowed.c_str(), f.format(defaults).c_str());
 }
 
-}  // namespace
+} // namespace
 
 void print_help()
 {
@@ -50,9 +51,9 @@ void print_help()
         "                          image. Options:\n",
         version());
     print_table(PyramidOptions::table(), PyramidOptions());
-    std::printf(
-        "\nExample:\n"
-        "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o rust_big.exr\n");
+    std::printf("\nExample:\n"
+                "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o "
+                "rust_big.exr\n");
 }
 
 void print_methods()
@@ -66,4 +67,4 @@ void print_version()
     std::printf("texsyn %s\n", version());
 }
 
-}  // namespace texsyn::cli
+} // namespace texsyn::cli

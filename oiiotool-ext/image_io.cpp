@@ -21,7 +21,7 @@ bool is_float_format(const std::string& filename)
 {
     std::string ext = OIIO::Strutil::lower(OIIO::Filesystem::extension(filename, false));
     return ext == "exr" || ext == "sxr" || ext == "mxr" || ext == "hdr" || ext == "rgbe"
-           || ext == "pfm";
+        || ext == "pfm";
 }
 
 OIIO::TypeDesc output_type(const CliState& state, const std::string& filename)
@@ -32,7 +32,7 @@ OIIO::TypeDesc output_type(const CliState& state, const std::string& filename)
 }
 
 void convert_buf(CliState& state, OIIO::ImageBuf& buf, const std::string& from,
-                 const std::string& to, const std::string& what)
+    const std::string& to, const std::string& what)
 {
     PlanarImage planes;
     std::string error;
@@ -76,7 +76,7 @@ private:
     int m_saved = -1;
 };
 
-}  // namespace
+} // namespace
 
 void push_input(CliState& state, const std::string& filename)
 {
@@ -93,8 +93,8 @@ void push_input(CliState& state, const std::string& filename)
     img.output_colorspace = state.pending_tocolorspace;
     state.stack.push_back(std::move(img));
     std::string space = state.pending_iscolorspace.empty()
-                            ? state.colors().guess_colorspace(state.stack.back().file_pixels.spec())
-                            : state.pending_iscolorspace;
+        ? state.colors().guess_colorspace(state.stack.back().file_pixels.spec())
+        : state.pending_iscolorspace;
     state.pending_iscolorspace.clear();
     reinterpret_input(state, space);
 }
@@ -126,7 +126,7 @@ void write_output(CliState& state, const std::string& filename)
     OIIO::TypeDesc type = output_type(state, filename);
     if (type == OIIO::TypeUnknown)
         throw CliError("-d : unknown data format '" + state.data_format
-                       + "' (use uint8, uint16, half or float)");
+            + "' (use uint8, uint16, half or float)");
     std::string space = img.output_colorspace;
     if (space.empty())
         space = type.is_floating_point() ? cc.scene_linear() : img.input_colorspace;
@@ -148,8 +148,8 @@ void write_output(CliState& state, const std::string& filename)
     std::string error;
     if (state.subbands) {
         if (img.subbands.empty())
-            throw CliError("-o " + filename
-                           + " : --subbands needs a synthesis on the stack (e.g. --pyramid)");
+            throw CliError(
+                "-o " + filename + " : --subbands needs a synthesis on the stack (e.g. --pyramid)");
         if (!write_subband_exr(filename, out, img.subbands, error))
             throw CliError(error);
         return;
@@ -158,4 +158,4 @@ void write_output(CliState& state, const std::string& filename)
         throw CliError(error);
 }
 
-}  // namespace texsyn::cli
+} // namespace texsyn::cli

@@ -21,13 +21,13 @@ namespace {
 bool takes_argument(const std::string& a)
 {
     return a == "--seed" || a == "--threads" || a == "--colorconfig" || a == "--iscolorspace"
-           || a == "--tocolorspace" || a == "-d" || a == "-o";
+        || a == "--tocolorspace" || a == "-d" || a == "-o";
 }
 
 bool is_flag(const std::string& a)
 {
     return a == "-v" || a == "--subbands" || a == "--help" || a == "-h" || a == "--version"
-           || a == "--list-methods";
+        || a == "--list-methods";
 }
 
 // "--pyramid:size=8x8" -> ("--pyramid", "size=8x8").
@@ -62,7 +62,7 @@ void check_output_path(const std::string& out, const std::vector<std::string>& i
     if (!writer) {
         (void)OIIO::geterror();
         throw CliError("-o " + out + " : no image format writes '"
-                       + std::filesystem::path(out).extension().string() + "' files");
+            + std::filesystem::path(out).extension().string() + "' files");
     }
     std::filesystem::path dir = std::filesystem::path(out).parent_path();
     if (dir.empty())
@@ -125,13 +125,13 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
         if (t != OIIO::TypeUInt8 && t != OIIO::TypeUInt16 && t != OIIO::TypeHalf
             && t != OIIO::TypeFloat)
             throw CliError("-d : unknown data format '" + state.data_format
-                           + "' (use uint8, uint16, half or float)");
+                + "' (use uint8, uint16, half or float)");
     }
     for (const std::string& out : outputs) {
         check_output_path(out, inputs);
         if (state.subbands && !OIIO::Strutil::iends_with(out, ".exr"))
-            throw CliError("-o " + out
-                           + " : --subbands writes a multi-part OpenEXR; name the output *.exr");
+            throw CliError(
+                "-o " + out + " : --subbands writes a multi-part OpenEXR; name the output *.exr");
     }
     if (outputs.empty() && !args.empty())
         throw CliError("nothing to do: no -o FILE (see texsyn --help)");
@@ -171,9 +171,9 @@ void run(CliState& state, const std::vector<std::string>& args)
     }
 }
 
-}  // namespace
+} // namespace
 
-}  // namespace texsyn::cli
+} // namespace texsyn::cli
 
 int main(int argc, char* argv[])
 {

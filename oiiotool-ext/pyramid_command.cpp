@@ -15,7 +15,7 @@ void show_progress(float fraction)
     std::fflush(stderr);
 }
 
-}  // namespace
+} // namespace
 
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers)
 {
@@ -38,20 +38,20 @@ void run_pyramid(CliState& state, const std::string& command, const std::string&
     result.input_colorspace = sample.input_colorspace;
     result.output_colorspace = sample.output_colorspace;
     auto start = std::chrono::steady_clock::now();
-    bool ok = pyramid_synthesize(result.buf, sample.buf, opt,
-                                 state.subbands ? &result.subbands : nullptr);
+    bool ok = pyramid_synthesize(
+        result.buf, sample.buf, opt, state.subbands ? &result.subbands : nullptr);
     if (state.progress)
         std::fprintf(stderr, "\n");
     if (!ok)
         throw CliError(command + " : " + result.buf.geterror());
     if (state.verbose) {
-        double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                          .count();
+        double secs
+            = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "texsyn: --pyramid %s from %s in %.2f s\n",
-                     result.buf.spec().get_string_attribute("synth:options").c_str(),
-                     sample.source.c_str(), secs);
+            result.buf.spec().get_string_attribute("synth:options").c_str(), sample.source.c_str(),
+            secs);
     }
     state.stack.push_back(std::move(result));
 }
 
-}  // namespace texsyn::cli
+} // namespace texsyn::cli

@@ -13,6 +13,7 @@ packages=(
   libfftw3-dev                              # optional GPL backend (-DTEXSYN_WITH_FFTW=ON)
   libeigen3-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  clang-format                              # the style check (tests: clang_format)
 )
 
 sudo_cmd=()

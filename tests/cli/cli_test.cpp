@@ -46,7 +46,7 @@ protected:
     {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         dir = fs::temp_directory_path()
-              / (std::string("texsyn_cli_") + info->test_suite_name() + "_" + info->name());
+            / (std::string("texsyn_cli_") + info->test_suite_name() + "_" + info->name());
         fs::remove_all(dir);
         fs::create_directories(dir);
         fs::copy_file(sample_path("stucco_yellow.png"), dir / "stucco.png");
@@ -60,8 +60,8 @@ protected:
 
     CliRun texsyn(const std::string& args, const std::string& env = "")
     {
-        std::string cmd = "cd " + quote(dir.string()) + " && " + env + " " + quote(TEXSYN_EXE)
-                          + " " + args + " > stdout.txt 2> stderr.txt";
+        std::string cmd = "cd " + quote(dir.string()) + " && " + env + " " + quote(TEXSYN_EXE) + " "
+            + args + " > stdout.txt 2> stderr.txt";
         CliRun r;
         int rc = std::system(cmd.c_str());
         r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);
@@ -85,7 +85,7 @@ protected:
     }
 
     void expect_failure(const std::string& args, const std::string& first_line,
-                        std::initializer_list<std::string> inputs = { "stucco.png" })
+        std::initializer_list<std::string> inputs = { "stucco.png" })
     {
         std::string before = slurp(dir / "stucco.png");
         CliRun r = texsyn(args);
@@ -103,8 +103,8 @@ protected:
         return buf;
     }
 
-    void write_sample(const std::string& name, int nchannels, OIIO::TypeDesc type,
-                      float special = 0.0f)
+    void write_sample(
+        const std::string& name, int nchannels, OIIO::TypeDesc type, float special = 0.0f)
     {
         OIIO::ImageSpec spec(32, 32, nchannels, OIIO::TypeFloat);
         OIIO::ImageBuf buf(spec);
@@ -119,13 +119,13 @@ protected:
     fs::path dir;
 };
 
-}  // namespace
+} // namespace
 
 TEST_F(Cli, SynthesizesAnExrWithMetadata)
 {
     CliRun r = texsyn("stucco.png --pyramid:size=96x64:iterations=1 -o out.exr");
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(r.err, "");  // quiet in pipelines
+    EXPECT_EQ(r.err, ""); // quiet in pipelines
     OIIO::ImageBuf out = read("out.exr");
     EXPECT_EQ(out.spec().width, 96);
     EXPECT_EQ(out.spec().height, 64);
@@ -173,7 +173,7 @@ TEST_F(Cli, IntegerOutputsAreInTheInputsSpace)
     ASSERT_EQ(r.status, 0) << r.err;
     auto in = OIIO::ImageBufAlgo::computePixelStats(read("stucco.png"));
     auto out = OIIO::ImageBufAlgo::computePixelStats(read("out.png"));
-    for (int c = 0; c < 3; ++c)  // 8-bit quantisation and rounding: within 2 code values
+    for (int c = 0; c < 3; ++c) // 8-bit quantisation and rounding: within 2 code values
         EXPECT_NEAR(out.avg[c], in.avg[c], 2.0 / 255.0) << c;
     EXPECT_EQ(read("out.png").nativespec().format, OIIO::TypeUInt8);
 }
@@ -182,7 +182,7 @@ TEST_F(Cli, ColourSpaceOptionsBehaveAsInOiiotool)
 {
     ASSERT_EQ(texsyn("stucco.png --pyramid:size=64x64:iterations=1 -d float -o lin.exr").status, 0);
     CliRun r = texsyn("stucco.png --pyramid:size=64x64:iterations=1 --tocolorspace ACEScg "
-                   "-d float -o cg.exr");
+                      "-d float -o cg.exr");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(read("cg.exr").spec().get_string_attribute("synth:colorspace"), "ACEScg");
     // ACEScg of a linear Rec.709 pixel: the matrix in ECOSYSTEM.md §4.
@@ -193,16 +193,18 @@ TEST_F(Cli, ColourSpaceOptionsBehaveAsInOiiotool)
     EXPECT_NEAR(b[0], 0.6130974f * a[0] + 0.3395231f * a[1] + 0.0473795f * a[2], 1e-4f);
 
     // Declaring the PNG as Raw data skips the sRGB decode: the output mean is the encoded one.
-    r = texsyn("stucco.png --iscolorspace Raw --pyramid:size=64x64:iterations=1 -d float -o raw.exr");
+    r = texsyn(
+        "stucco.png --iscolorspace Raw --pyramid:size=64x64:iterations=1 -d float -o raw.exr");
     ASSERT_EQ(r.status, 0) << r.err;
     auto raw = OIIO::ImageBufAlgo::computePixelStats(read("raw.exr"));
     auto png = OIIO::ImageBufAlgo::computePixelStats(read("stucco.png"));
     EXPECT_NEAR(raw.avg[1], png.avg[1], 3e-3);
     // --iscolorspace before the input applies to the next input.
-    r = texsyn("--iscolorspace Raw stucco.png --pyramid:size=64x64:iterations=1 -d float -o raw2.exr");
+    r = texsyn(
+        "--iscolorspace Raw stucco.png --pyramid:size=64x64:iterations=1 -d float -o raw2.exr");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(OIIO::ImageBufAlgo::computePixelHashSHA1(read("raw.exr")),
-              OIIO::ImageBufAlgo::computePixelHashSHA1(read("raw2.exr")));
+        OIIO::ImageBufAlgo::computePixelHashSHA1(read("raw2.exr")));
 }
 
 TEST_F(Cli, OcioEnvironmentAndColorconfigAreHonoured)
@@ -222,9 +224,21 @@ TEST_F(Cli, OcioEnvironmentAndColorconfigAreHonoured)
 
 TEST_F(Cli, SameSeedSameBitsAtAnyThreadCount)
 {
-    ASSERT_EQ(texsyn("--threads 1 --seed 4 stucco.png --pyramid:size=80x80:iterations=2 -d float -o a.exr").status, 0);
-    ASSERT_EQ(texsyn("--threads 2 --seed 4 stucco.png --pyramid:size=80x80:iterations=2 -d float -o b.exr").status, 0);
-    ASSERT_EQ(texsyn("--threads 2 --seed 5 stucco.png --pyramid:size=80x80:iterations=2 -d float -o c.exr").status, 0);
+    ASSERT_EQ(
+        texsyn(
+            "--threads 1 --seed 4 stucco.png --pyramid:size=80x80:iterations=2 -d float -o a.exr")
+            .status,
+        0);
+    ASSERT_EQ(
+        texsyn(
+            "--threads 2 --seed 4 stucco.png --pyramid:size=80x80:iterations=2 -d float -o b.exr")
+            .status,
+        0);
+    ASSERT_EQ(
+        texsyn(
+            "--threads 2 --seed 5 stucco.png --pyramid:size=80x80:iterations=2 -d float -o c.exr")
+            .status,
+        0);
     auto hash = [&](const char* f) { return OIIO::ImageBufAlgo::computePixelHashSHA1(read(f)); };
     EXPECT_EQ(hash("a.exr"), hash("b.exr"));
     EXPECT_NE(hash("a.exr"), hash("c.exr"));
@@ -236,14 +250,14 @@ TEST_F(Cli, SubbandsEXRCanBeTakenApartWithStockOiiotool)
     CliRun r = texsyn("--subbands stucco.png --pyramid:size=128x96:iterations=1 -o bands.exr");
     ASSERT_EQ(r.status, 0) << r.err;
     std::string cmd = "cd " + quote(dir.string())
-                      + " && oiiotool bands.exr --subimage synth.s2.o1 --fullpixels -o band.exr"
-                        " && oiiotool bands.exr --subimage sample.lowpass --fullpixels -o low.exr";
+        + " && oiiotool bands.exr --subimage synth.s2.o1 --fullpixels -o band.exr"
+          " && oiiotool bands.exr --subimage sample.lowpass --fullpixels -o low.exr";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     OIIO::ImageBuf band = read("band.exr");
-    EXPECT_EQ(band.spec().width, 32);  // scale 2 of a 128-wide synthesis
+    EXPECT_EQ(band.spec().width, 32); // scale 2 of a 128-wide synthesis
     EXPECT_EQ(band.spec().height, 24);
     EXPECT_EQ(band.spec().channelnames, (std::vector<std::string> { "pc0", "pc1", "pc2" }));
-    EXPECT_EQ(read("low.exr").spec().width, 8);  // 4 scales of a 128-wide sample
+    EXPECT_EQ(read("low.exr").spec().width, 8); // 4 scales of a 128-wide sample
     OIIO::ImageBuf synth((dir / "bands.exr").string());
     EXPECT_EQ(synth.spec().get_string_attribute("oiio:subimagename"), "synth");
     EXPECT_EQ(synth.nsubimages(), 1 + 2 * (1 + 4 * 4 + 1));
@@ -251,8 +265,8 @@ TEST_F(Cli, SubbandsEXRCanBeTakenApartWithStockOiiotool)
 
 TEST_F(Cli, AllChannelCountsAndPixelTypesWork)
 {
-    const OIIO::TypeDesc types[] = { OIIO::TypeUInt8, OIIO::TypeUInt16, OIIO::TypeHalf,
-                                     OIIO::TypeFloat };
+    const OIIO::TypeDesc types[]
+        = { OIIO::TypeUInt8, OIIO::TypeUInt16, OIIO::TypeHalf, OIIO::TypeFloat };
     for (int nc = 1; nc <= 4; ++nc)
         for (OIIO::TypeDesc t : types) {
             std::string ext = (t == OIIO::TypeHalf || t == OIIO::TypeFloat) ? ".exr" : ".tif";
@@ -288,22 +302,23 @@ TEST_F(Cli, VerboseReportsTheRun)
 
 TEST_F(Cli, BadFilesAreRefused)
 {
-    expect_failure("missing.png --pyramid -o out.exr",
-                   "texsyn ERROR: missing.png: no such file");
+    expect_failure("missing.png --pyramid -o out.exr", "texsyn ERROR: missing.png: no such file");
     std::ofstream(dir / "notes.png") << "this is not a PNG file\n";
     expect_failure("notes.png --pyramid -o out.exr",
-                   "texsyn ERROR: notes.png: cannot read image (Invalid image file \"notes.png\": Not a "
-                   "PNG file)",
-                   { "stucco.png", "notes.png" });
+        "texsyn ERROR: notes.png: cannot read image (Invalid image file \"notes.png\": Not a "
+        "PNG file)",
+        { "stucco.png", "notes.png" });
     std::string png = slurp(dir / "stucco.png");
-    std::ofstream(dir / "cut.png", std::ios::binary).write(png.data(), std::streamsize(png.size() / 3));
+    std::ofstream(dir / "cut.png", std::ios::binary)
+        .write(png.data(), std::streamsize(png.size() / 3));
     CliRun r = texsyn("cut.png --pyramid -o out.exr");
     EXPECT_EQ(r.status, 1);
     EXPECT_EQ(r.first_err_line().find("texsyn ERROR: cut.png: cannot read image"), 0u) << r.err;
     EXPECT_FALSE(fs::exists(dir / "out.exr"));
     fs::create_directory(dir / "folder");
     expect_failure("folder --pyramid -o out.exr",
-                   "texsyn ERROR: folder: is a directory, not an image", { "stucco.png", "folder", "cut.png", "notes.png" });
+        "texsyn ERROR: folder: is a directory, not an image",
+        { "stucco.png", "folder", "cut.png", "notes.png" });
 }
 
 TEST_F(Cli, NonFinitePixelsAreRefused)
@@ -311,72 +326,73 @@ TEST_F(Cli, NonFinitePixelsAreRefused)
     write_sample("nan.exr", 3, OIIO::TypeFloat, std::nanf(""));
     write_sample("inf.exr", 3, OIIO::TypeHalf, INFINITY);
     expect_failure("nan.exr --pyramid -o out.exr",
-                   "texsyn ERROR: nan.exr: pixel (3, 4) channel R is NaN; texsyn needs finite "
-                   "pixel values",
-                   { "stucco.png", "nan.exr", "inf.exr" });
+        "texsyn ERROR: nan.exr: pixel (3, 4) channel R is NaN; texsyn needs finite "
+        "pixel values",
+        { "stucco.png", "nan.exr", "inf.exr" });
     expect_failure("inf.exr --pyramid -o out.exr",
-                   "texsyn ERROR: inf.exr: pixel (3, 4) channel R is infinite; texsyn needs "
-                   "finite pixel values",
-                   { "stucco.png", "nan.exr", "inf.exr" });
+        "texsyn ERROR: inf.exr: pixel (3, 4) channel R is infinite; texsyn needs "
+        "finite pixel values",
+        { "stucco.png", "nan.exr", "inf.exr" });
 }
 
 TEST_F(Cli, MalformedCommandsAndOptionsAreRefused)
 {
     expect_failure("stucco.png --frobnicate -o out.exr",
-                   "texsyn ERROR: unknown command or option '--frobnicate' (see texsyn --help)");
+        "texsyn ERROR: unknown command or option '--frobnicate' (see texsyn --help)");
     expect_failure("stucco.png --pyramid:levels=3 -o out.exr",
-                   "texsyn ERROR: --pyramid : unknown option 'levels' (known: size, iterations, "
-                   "pyramid, scales, orientations, histogram, fft)");
+        "texsyn ERROR: --pyramid : unknown option 'levels' (known: size, iterations, "
+        "pyramid, scales, orientations, histogram, fft)");
     expect_failure("stucco.png --pyramid:size=abc -o out.exr",
-                   "texsyn ERROR: --pyramid : size=abc is not a size (expected WxH, e.g. 1024x1024)");
+        "texsyn ERROR: --pyramid : size=abc is not a size (expected WxH, e.g. 1024x1024)");
     expect_failure("stucco.png --pyramid:size=0x10 -o out.exr",
-                   "texsyn ERROR: --pyramid : size=0x10 is out of range (each side 1..1048576)");
+        "texsyn ERROR: --pyramid : size=0x10 is out of range (each side 1..1048576)");
     expect_failure("stucco.png --pyramid:iterations=-1 -o out.exr",
-                   "texsyn ERROR: --pyramid : iterations=-1 is out of range (0..100)");
+        "texsyn ERROR: --pyramid : iterations=-1 is out of range (0..100)");
     expect_failure("stucco.png --pyramid:orientations=99 -o out.exr",
-                   "texsyn ERROR: --pyramid : orientations=99 is out of range (1..8)");
+        "texsyn ERROR: --pyramid : orientations=99 is out of range (1..8)");
     expect_failure("stucco.png --pyramid:iterations -o out.exr",
-                   "texsyn ERROR: --pyramid : malformed option 'iterations' (expected name=value)");
-    expect_failure("--seed abc stucco.png --pyramid -o out.exr",
-                   "texsyn ERROR: --seed=abc is not an integer");
+        "texsyn ERROR: --pyramid : malformed option 'iterations' (expected name=value)");
+    expect_failure(
+        "--seed abc stucco.png --pyramid -o out.exr", "texsyn ERROR: --seed=abc is not an integer");
     expect_failure("--threads -2 stucco.png --pyramid -o out.exr",
-                   "texsyn ERROR: --threads=-2 is out of range (0..1024)");
+        "texsyn ERROR: --threads=-2 is out of range (0..1024)");
     expect_failure("-d int7 stucco.png --pyramid -o out.exr",
-                   "texsyn ERROR: -d : unknown data format 'int7' (use uint8, uint16, half or float)");
+        "texsyn ERROR: -d : unknown data format 'int7' (use uint8, uint16, half or float)");
     expect_failure("stucco.png --pyramid -o", "texsyn ERROR: -o : missing argument");
-    expect_failure("stucco.png --pyramid", "texsyn ERROR: nothing to do: no -o FILE (see texsyn --help)");
+    expect_failure(
+        "stucco.png --pyramid", "texsyn ERROR: nothing to do: no -o FILE (see texsyn --help)");
     expect_failure("--pyramid -o out.exr",
-                   "texsyn ERROR: --pyramid : no current image (give an input file before it)");
+        "texsyn ERROR: --pyramid : no current image (give an input file before it)");
     expect_failure("stucco.png --tocolorspace Nope --pyramid -o out.exr",
-                   "texsyn ERROR: --tocolorspace : unknown colour space 'Nope'");
+        "texsyn ERROR: --tocolorspace : unknown colour space 'Nope'");
 }
 
 TEST_F(Cli, ImpossibleSizesAreRefusedBeforeAllocating)
 {
     CliRun r = texsyn("stucco.png --pyramid:size=200000x200000 -o out.exr");
     EXPECT_EQ(r.status, 1);
-    EXPECT_EQ(r.first_err_line().find(
-                  "texsyn ERROR: --pyramid : size=200000x200000 would need about "),
-              0u)
+    EXPECT_EQ(
+        r.first_err_line().find("texsyn ERROR: --pyramid : size=200000x200000 would need about "),
+        0u)
         << r.err;
     EXPECT_TRUE(outputs().empty());
     write_sample("tiny.exr", 3, OIIO::TypeFloat);
     expect_failure("tiny.exr --pyramid:scales=4 -o out.exr",
-                   "texsyn ERROR: --pyramid : scales=4 is too many for a 32x32 sample (at most 2)",
-                   { "stucco.png", "tiny.exr" });
+        "texsyn ERROR: --pyramid : scales=4 is too many for a 32x32 sample (at most 2)",
+        { "stucco.png", "tiny.exr" });
 }
 
 TEST_F(Cli, OutputsAreCheckedBeforeAnyWork)
 {
     expect_failure("stucco.png --pyramid -o stucco.png",
-                   "texsyn ERROR: -o stucco.png : refusing to overwrite the input stucco.png");
+        "texsyn ERROR: -o stucco.png : refusing to overwrite the input stucco.png");
     expect_failure("stucco.png --pyramid -o ./stucco.png",
-                   "texsyn ERROR: -o ./stucco.png : refusing to overwrite the input stucco.png");
+        "texsyn ERROR: -o ./stucco.png : refusing to overwrite the input stucco.png");
     expect_failure("stucco.png --pyramid -o no/such/dir/out.exr",
-                   "texsyn ERROR: -o no/such/dir/out.exr : directory no/such/dir does not exist");
+        "texsyn ERROR: -o no/such/dir/out.exr : directory no/such/dir does not exist");
     expect_failure("stucco.png --pyramid -o out.unknownext",
-                   "texsyn ERROR: -o out.unknownext : no image format writes '.unknownext' files");
+        "texsyn ERROR: -o out.unknownext : no image format writes '.unknownext' files");
     expect_failure("--subbands stucco.png --pyramid:size=32x32:iterations=1 -o out.png",
-                   "texsyn ERROR: -o out.png : --subbands writes a multi-part OpenEXR; name the "
-                   "output *.exr");
+        "texsyn ERROR: -o out.png : --subbands writes a multi-part OpenEXR; name the "
+        "output *.exr");
 }

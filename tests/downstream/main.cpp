@@ -19,7 +19,7 @@ int main()
         std::fprintf(stderr, "downstream: %s\n", out.geterror().c_str());
         return 1;
     }
-    std::printf("downstream: texsyn %s synthesized %dx%d\n", texsyn::version(),
-                out.spec().width, out.spec().height);
+    std::printf("downstream: texsyn %s synthesized %dx%d\n", texsyn::version(), out.spec().width,
+        out.spec().height);
     return 0;
 }

@@ -11,7 +11,7 @@
 #include <random>
 #include <sstream>
 
-#include <unistd.h>  // getpid
+#include <unistd.h> // getpid
 
 #include <gtest/gtest.h>
 
@@ -35,9 +35,8 @@ PlanarImage correlated_rgb(int w, int h, unsigned seed)
     PlanarImage img = make_image(w, h, 3);
     std::mt19937 rng(seed);
     std::normal_distribution<float> normal(0.0f, 1.0f);
-    const float a[3][3] = { { 0.20f, 0.05f, 0.01f },
-                            { 0.15f, 0.06f, -0.02f },
-                            { 0.10f, 0.02f, 0.03f } };
+    const float a[3][3]
+        = { { 0.20f, 0.05f, 0.01f }, { 0.15f, 0.06f, -0.02f }, { 0.10f, 0.02f, 0.03f } };
     const float b[3] = { 0.5f, 0.4f, 0.3f };
     for (size_t i = 0; i < img.channels[0].size(); ++i) {
         const float z[3] = { normal(rng), normal(rng), normal(rng) };
@@ -75,8 +74,8 @@ void expect_round_trip(const PlanarImage& original, const ColorTransform& t, dou
     recorrelate(img, t);
     for (int c = 0; c < original.nchannels(); ++c)
         for (size_t i = 0; i < original.channels[0].size(); ++i)
-            ASSERT_NEAR(img.channels[size_t(c)].data()[i], original.channels[size_t(c)].data()[i],
-                        tol)
+            ASSERT_NEAR(
+                img.channels[size_t(c)].data()[i], original.channels[size_t(c)].data()[i], tol)
                 << "channel " << c << " pixel " << i;
 }
 
@@ -101,7 +100,7 @@ protected:
     std::unique_ptr<ColorConfig> config;
 };
 
-}  // namespace
+} // namespace
 
 TEST(Decorrelation, CovarianceIsIdentity)
 {
@@ -182,7 +181,7 @@ TEST(Decorrelation, ColoursOnALineAndAPlane)
         PlanarImage dec = img;
         decorrelate(dec, t);
         for (int k = 0; k < rank; ++k)
-            EXPECT_NEAR(covariance(dec, k, k), 1.0, 1e-4) << "rank " << rank;  // as above
+            EXPECT_NEAR(covariance(dec, k, k), 1.0, 1e-4) << "rank " << rank; // as above
     }
 }
 
@@ -190,13 +189,13 @@ TEST(Decorrelation, OneChannelIsStandardisation)
 {
     PlanarImage img = make_image(50, 20, 1);
     for (size_t i = 0; i < img.channels[0].size(); ++i)
-        img.channels[0].data()[i] = float(i % 10);  // mean 4.5, variance 8.25
+        img.channels[0].data()[i] = float(i % 10); // mean 4.5, variance 8.25
     const ColorTransform t = fit_color_transform(img, 1);
     ASSERT_EQ(t.n, 1);
-    EXPECT_NEAR(t.mean[0], 4.5, 1e-12);                     // exact sums of small integers
-    EXPECT_NEAR(t.forward[0], 1.0 / std::sqrt(8.25), 1e-12);  // double eigensolver on 1x1
+    EXPECT_NEAR(t.mean[0], 4.5, 1e-12);                      // exact sums of small integers
+    EXPECT_NEAR(t.forward[0], 1.0 / std::sqrt(8.25), 1e-12); // double eigensolver on 1x1
     EXPECT_NEAR(t.inverse[0], std::sqrt(8.25), 1e-12);
-    expect_round_trip(img, t, 1e-5);  // two float roundings of values up to 9
+    expect_round_trip(img, t, 1e-5); // two float roundings of values up to 9
 }
 
 TEST(Decorrelation, OnlyFirstChannelsTouchedAndThreadIndependent)
@@ -210,8 +209,9 @@ TEST(Decorrelation, OnlyFirstChannelsTouchedAndThreadIndependent)
     decorrelate(one, t, 1);
     decorrelate(many, t, 4);
     for (int c = 0; c < 4; ++c)
-        EXPECT_EQ(0, std::memcmp(one.channels[size_t(c)].data(), many.channels[size_t(c)].data(),
-                                 one.channels[0].size() * sizeof(float)));
+        EXPECT_EQ(0,
+            std::memcmp(one.channels[size_t(c)].data(), many.channels[size_t(c)].data(),
+                one.channels[0].size() * sizeof(float)));
     for (size_t i = 0; i < one.channels[3].size(); ++i)
         ASSERT_EQ(one.channels[3].data()[i], 0.25f);
 }
@@ -220,8 +220,8 @@ TEST_F(Ocio, BundledConfigLoadsAndResolves)
 {
     EXPECT_EQ(config->source(), "<bundled>");
     EXPECT_EQ(config->scene_linear(), "Linear Rec.709 (sRGB)");
-    const std::vector<std::string> expected = { "Linear Rec.709 (sRGB)", "sRGB - Texture",
-                                                "ACEScg", "Raw" };
+    const std::vector<std::string> expected
+        = { "Linear Rec.709 (sRGB)", "sRGB - Texture", "ACEScg", "Raw" };
     EXPECT_EQ(config->colorspace_names(), expected);
     EXPECT_EQ(config->resolve("sRGB"), "sRGB - Texture");
     EXPECT_EQ(config->resolve("srgb_tx"), "sRGB - Texture");
@@ -252,7 +252,7 @@ TEST_F(Ocio, SrgbToLinear)
     std::string error;
     ASSERT_TRUE(config->convert(img, "sRGB", "scene_linear", error)) << error;
     for (const Plane& p : img.channels)
-        EXPECT_NEAR(p.data()[0], 0.214041f, 1e-5);  // ((0.5 + 0.055)/1.055)^2.4, 6 digits given
+        EXPECT_NEAR(p.data()[0], 0.214041f, 1e-5); // ((0.5 + 0.055)/1.055)^2.4, 6 digits given
 }
 
 TEST_F(Ocio, LinearRedToAcescg)
@@ -284,7 +284,7 @@ TEST_F(Ocio, RoundTripKeepsAlphaAndExtraChannels)
             const float got = img.channels[size_t(c)].data()[i];
             const float want = original.channels[size_t(c)].data()[i];
             if (c < 3)
-                ASSERT_NEAR(got, want, 1e-5);  // float pow and its inverse on [0, 1]
+                ASSERT_NEAR(got, want, 1e-5); // float pow and its inverse on [0, 1]
             else
                 ASSERT_EQ(got, want);
         }
@@ -297,7 +297,7 @@ TEST_F(Ocio, GreyChannels)
     std::string error;
     ASSERT_TRUE(config->convert(grey, "sRGB", "linear", error)) << error;
     for (size_t i = 0; i < 12; ++i)
-        EXPECT_NEAR(grey.channels[0].data()[i], 0.214041f, 1e-5);  // as for RGB
+        EXPECT_NEAR(grey.channels[0].data()[i], 0.214041f, 1e-5); // as for RGB
 
     PlanarImage grey_alpha = make_image(4, 3, 2);
     grey_alpha.alpha_channel = 1;
@@ -321,8 +321,9 @@ TEST_F(Ocio, DataAndIdentityAreNoOps)
     EXPECT_TRUE(config->convert(img, "sRGB", "Raw", error));
     EXPECT_TRUE(config->convert(img, "sRGB", "srgb_tx", error));
     for (int c = 0; c < 3; ++c)
-        EXPECT_EQ(0, std::memcmp(img.channels[size_t(c)].data(),
-                                 original.channels[size_t(c)].data(), 4 * sizeof(float)));
+        EXPECT_EQ(0,
+            std::memcmp(img.channels[size_t(c)].data(), original.channels[size_t(c)].data(),
+                4 * sizeof(float)));
 }
 
 TEST_F(Ocio, UnknownSpaceFailsWithoutChanges)
@@ -331,8 +332,9 @@ TEST_F(Ocio, UnknownSpaceFailsWithoutChanges)
     std::fill(img.channels[1].data(), img.channels[1].data() + 4, 0.5f);
     std::string error;
     EXPECT_FALSE(config->convert(img, "sRGB", "NoSuchSpace", error));
-    EXPECT_EQ(error, "unknown colour space 'NoSuchSpace' (known: Linear Rec.709 (sRGB), "
-                     "sRGB - Texture, ACEScg, Raw)");
+    EXPECT_EQ(error,
+        "unknown colour space 'NoSuchSpace' (known: Linear Rec.709 (sRGB), "
+        "sRGB - Texture, ACEScg, Raw)");
     for (size_t i = 0; i < 4; ++i)
         EXPECT_EQ(img.channels[1].data()[i], 0.5f);
 }
@@ -386,11 +388,11 @@ TEST_F(Ocio, GuessColorspace)
     OIIO::ImageSpec f16(8, 8, 4, OIIO::TypeDesc::HALF);
     EXPECT_EQ(config->guess_colorspace(f16), "Linear Rec.709 (sRGB)");
 
-    u8.attribute("oiio:ColorSpace", "sRGB");  // what OIIO's PNG reader sets
+    u8.attribute("oiio:ColorSpace", "sRGB"); // what OIIO's PNG reader sets
     EXPECT_EQ(config->guess_colorspace(u8), "sRGB - Texture");
     u8.attribute("oiio:ColorSpace", "NotInConfig");
     EXPECT_EQ(config->guess_colorspace(u8), "sRGB - Texture");
-    f32.attribute("oiio:ColorSpace", "Linear");  // what OIIO reads back from float EXRs
+    f32.attribute("oiio:ColorSpace", "Linear"); // what OIIO reads back from float EXRs
     EXPECT_EQ(config->guess_colorspace(f32), "Linear Rec.709 (sRGB)");
     f16.attribute("oiio:ColorSpace", "ACEScg");
     EXPECT_EQ(config->guess_colorspace(f16), "ACEScg");

@@ -44,15 +44,15 @@ std::vector<std::complex<double>> naive_dft(const std::vector<float>& x, int w, 
                 for (int xx = 0; xx < w; ++xx) {
                     const double a = -2 * M_PI * (double(kx) * xx / w + double(ky) * y / h);
                     s += double(x[size_t(y) * w + xx])
-                         * std::complex<double>(std::cos(a), std::sin(a));
+                        * std::complex<double>(std::cos(a), std::sin(a));
                 }
             out[size_t(ky) * wc + kx] = s;
         }
     return out;
 }
 
-const std::vector<std::pair<int, int>> small_sizes = { { 7, 5 }, { 8, 6 }, { 16, 16 }, { 5, 8 },
-                                                       { 1, 4 }, { 4, 1 }, { 1, 1 },   { 3, 9 } };
+const std::vector<std::pair<int, int>> small_sizes
+    = { { 7, 5 }, { 8, 6 }, { 16, 16 }, { 5, 8 }, { 1, 4 }, { 4, 1 }, { 1, 1 }, { 3, 9 } };
 
 std::vector<FftBackend> backends()
 {
@@ -62,7 +62,7 @@ std::vector<FftBackend> backends()
     return b;
 }
 
-}  // namespace
+} // namespace
 
 TEST(Fft, Names)
 {
@@ -90,7 +90,7 @@ TEST(Fft, MatchesNaiveDft)
         for (auto [w, h] : small_sizes) {
             auto p = plan(w, h, b);
             ASSERT_EQ(p->spectrum_size(), size_t(h) * (w / 2 + 1));
-            const auto x   = test_signal(w, h, unsigned(w * 31 + h));
+            const auto x = test_signal(w, h, unsigned(w * 31 + h));
             const auto ref = naive_dft(x, w, h);
             std::vector<Cpx> spec(p->spectrum_size());
             p->forward(x.data(), spec.data());
@@ -107,9 +107,9 @@ TEST(Fft, MatchesNaiveDft)
 TEST(Fft, RoundTrip)
 {
     for (FftBackend b : backends())
-        for (auto [w, h] : std::vector<std::pair<int, int>>{
+        for (auto [w, h] : std::vector<std::pair<int, int>> {
                  { 7, 5 }, { 8, 6 }, { 16, 16 }, { 257, 131 }, { 640, 480 } }) {
-            auto p       = plan(w, h, b);
+            auto p = plan(w, h, b);
             const auto x = test_signal(w, h, 7);
             std::vector<Cpx> spec(p->spectrum_size());
             std::vector<float> y(x.size());
@@ -128,7 +128,7 @@ TEST(Fft, RoundTrip)
 TEST(Fft, Parseval)
 {
     const int w = 37, h = 24;
-    auto p       = plan(w, h);
+    auto p = plan(w, h);
     const auto x = test_signal(w, h, 3);
     std::vector<Cpx> spec(p->spectrum_size());
     p->forward(x.data(), spec.data());
@@ -141,7 +141,7 @@ TEST(Fft, Parseval)
             // Columns 1..ceil(w/2)-1 stand for themselves and their mirror image.
             const bool mirrored = kx > 0 && 2 * kx != w;
             freq += (mirrored ? 2.0 : 1.0)
-                    * std::norm(std::complex<double>(spec[size_t(ky) * wc + kx]));
+                * std::norm(std::complex<double>(spec[size_t(ky) * wc + kx]));
         }
     // Float rounding of ~900 terms.
     EXPECT_NEAR(freq / (double(w) * h), space, 1e-5 * space);
@@ -150,7 +150,7 @@ TEST(Fft, Parseval)
 TEST(Fft, Linearity)
 {
     const int w = 30, h = 17;
-    auto p       = plan(w, h);
+    auto p = plan(w, h);
     const auto a = test_signal(w, h, 1), b = test_signal(w, h, 2);
     std::vector<float> c(a.size());
     for (size_t i = 0; i < c.size(); ++i)
@@ -167,8 +167,8 @@ TEST(Fft, Linearity)
 TEST(Fft, ThreadCountIndependent)
 {
     for (FftBackend b : backends())
-        for (auto [w, h] : std::vector<std::pair<int, int>>{ { 255, 97 }, { 256, 256 } }) {
-            auto p       = plan(w, h, b);
+        for (auto [w, h] : std::vector<std::pair<int, int>> { { 255, 97 }, { 256, 256 } }) {
+            auto p = plan(w, h, b);
             const auto x = test_signal(w, h, 11);
             std::vector<Cpx> s1(p->spectrum_size()), s2(s1.size());
             std::vector<float> y1(x.size()), y2(x.size());
@@ -220,13 +220,13 @@ TEST(Fft, InverseDropsNonHermitianParts)
     for (FftBackend b : backends()) {
         auto p = plan(w, h, b);
         std::vector<Cpx> spec(p->spectrum_size(), Cpx(0.0f));
-        spec[0]               = Cpx(48.0f, 5.0f);
-        spec[w / 2]           = Cpx(0.0f, 7.0f);
+        spec[0] = Cpx(48.0f, 5.0f);
+        spec[w / 2] = Cpx(0.0f, 7.0f);
         spec[3 * (w / 2 + 1)] = Cpx(0.0f, -3.0f);
         std::vector<float> y(size_t(w) * h);
         p->inverse(spec.data(), y.data());
         for (float v : y)
-            EXPECT_NEAR(v, 1.0f, 1e-6) << fft_backend_name(b);  // float rounding
+            EXPECT_NEAR(v, 1.0f, 1e-6) << fft_backend_name(b); // float rounding
     }
 }
 
@@ -235,7 +235,7 @@ TEST(Fft, FftwAgreesWithKiss)
 {
     if (!fft_backend_available(FftBackend::Fftw))
         GTEST_SKIP() << "built without FFTW";
-    for (auto [w, h] : std::vector<std::pair<int, int>>{ { 7, 5 }, { 64, 48 }, { 257, 131 } }) {
+    for (auto [w, h] : std::vector<std::pair<int, int>> { { 7, 5 }, { 64, 48 }, { 257, 131 } }) {
         auto k = plan(w, h, FftBackend::Kiss), f = plan(w, h, FftBackend::Fftw);
         const auto x = test_signal(w, h, 5);
         std::vector<Cpx> sk(k->spectrum_size()), sf(sk.size());

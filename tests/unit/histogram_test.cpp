@@ -85,10 +85,10 @@ std::vector<float> bins256_oracle(const std::vector<float>& src, const std::vect
             lut[size_t(k)] = tmax;
             continue;
         }
-        for (int j = 0; j < 256; ++j)  // linear scan for the segment holding p
+        for (int j = 0; j < 256; ++j) // linear scan for the segment holding p
             if (tc[size_t(j)] < p && p <= tc[size_t(j + 1)]) {
-                lut[size_t(k)] = tmin + tw * (j + (p - tc[size_t(j)])
-                                                      / (tc[size_t(j + 1)] - tc[size_t(j)]));
+                lut[size_t(k)]
+                    = tmin + tw * (j + (p - tc[size_t(j)]) / (tc[size_t(j + 1)] - tc[size_t(j)]));
                 break;
             }
     }
@@ -101,7 +101,7 @@ std::vector<float> bins256_oracle(const std::vector<float>& src, const std::vect
     return out;
 }
 
-}  // namespace
+} // namespace
 
 TEST(Histogram, ModeNames)
 {
@@ -114,12 +114,12 @@ TEST(Histogram, QuantileInterpolatesAndClamps)
     QuantileTable t = QuantileTable::from_sorted({ 0.0f, 10.0f, 20.0f, 30.0f });
     EXPECT_EQ(t.quantile(0.0), 0.0f);
     EXPECT_EQ(t.quantile(1.0), 30.0f);
-    EXPECT_EQ(t.quantile(0.125), 0.0f);    // position 0
-    EXPECT_EQ(t.quantile(0.375), 10.0f);   // position 1
-    EXPECT_EQ(t.quantile(0.5), 15.0f);     // position 1.5
-    EXPECT_EQ(t.quantile(0.875), 30.0f);   // position 3
-    QuantileTable u(std::vector<float>{ 3.0f, 1.0f, 2.0f }.data(), 3);
-    EXPECT_EQ(u.sorted(), (std::vector<float>{ 1.0f, 2.0f, 3.0f }));
+    EXPECT_EQ(t.quantile(0.125), 0.0f);  // position 0
+    EXPECT_EQ(t.quantile(0.375), 10.0f); // position 1
+    EXPECT_EQ(t.quantile(0.5), 15.0f);   // position 1.5
+    EXPECT_EQ(t.quantile(0.875), 30.0f); // position 3
+    QuantileTable u(std::vector<float> { 3.0f, 1.0f, 2.0f }.data(), 3);
+    EXPECT_EQ(u.sorted(), (std::vector<float> { 1.0f, 2.0f, 3.0f }));
 }
 
 TEST(Histogram, ExactHitsTargetQuantilesEqualSizes)
@@ -153,8 +153,8 @@ TEST(Histogram, ExactAndBinsPreserveOrder)
         match_histogram(src, table, mode);
         std::vector<size_t> idx(before.size());
         std::iota(idx.begin(), idx.end(), size_t(0));
-        std::stable_sort(idx.begin(), idx.end(),
-                         [&](size_t a, size_t b) { return before[a] < before[b]; });
+        std::stable_sort(
+            idx.begin(), idx.end(), [&](size_t a, size_t b) { return before[a] < before[b]; });
         for (size_t i = 1; i < idx.size(); ++i)
             ASSERT_LE(src.data()[idx[i - 1]], src.data()[idx[i]]) << histogram_mode_name(mode);
         EXPECT_GE(*std::min_element(src.data(), src.data() + src.size()), table.sorted().front());
@@ -194,7 +194,7 @@ TEST(Histogram, ConstantSourceAndTarget)
     match_histogram(q, rank_table(101), HistogramMode::Bins256);
     for (size_t i = 0; i < q.size(); ++i) {
         ASSERT_TRUE(std::isfinite(q.data()[i]));
-        EXPECT_NEAR(q.data()[i], 50.0f, 0.5f);  // within one target bin of the median
+        EXPECT_NEAR(q.data()[i], 50.0f, 0.5f); // within one target bin of the median
     }
 }
 
@@ -203,10 +203,10 @@ TEST(Histogram, SingleValue)
     const float t[3] = { 1.0f, 2.0f, 3.0f };
     Plane one(1, 1, 42.0f);
     match_histogram(one, QuantileTable(t, 3), HistogramMode::Exact);
-    EXPECT_EQ(one.data()[0], 2.0f);  // Q(0.5): the median
+    EXPECT_EQ(one.data()[0], 2.0f); // Q(0.5): the median
     Plane binned(1, 1, 42.0f);
     match_histogram(binned, QuantileTable(t, 3), HistogramMode::Bins256);
-    EXPECT_NEAR(binned.data()[0], 2.0f, 2.0f / 256);  // the binned median: within one bin
+    EXPECT_NEAR(binned.data()[0], 2.0f, 2.0f / 256); // the binned median: within one bin
     Plane p = random_plane(8, 8, 8u);
     const float t1 = 0.25f;
     match_histogram(p, QuantileTable(&t1, 1), HistogramMode::Exact);
@@ -237,25 +237,37 @@ TEST(Histogram, RadixRankingMatchesStableSort)
     std::mt19937 rng(99u);
     std::normal_distribution<float> normal(0.0f, 1.0f);
     std::uniform_int_distribution<int> pick(0, 9);
-    const int n = 300000;  // large enough to exercise every radix pass and many chunks
+    const int n = 300000; // large enough to exercise every radix pass and many chunks
     Plane p(n, 1);
     for (int i = 0; i < n; ++i) {
         float v;
         switch (pick(rng)) {
-        case 0: v = 0.0f; break;
-        case 1: v = -0.0f; break;
-        case 2: v = float(int(normal(rng) * 4.0f)); break;        // many exact ties
-        case 3: v = normal(rng) * 1e-40f; break;                  // denormals
-        case 4: v = normal(rng) * 1e30f; break;                   // huge magnitudes
-        default: v = normal(rng) * 100.0f; break;
+        case 0:
+            v = 0.0f;
+            break;
+        case 1:
+            v = -0.0f;
+            break;
+        case 2:
+            v = float(int(normal(rng) * 4.0f));
+            break; // many exact ties
+        case 3:
+            v = normal(rng) * 1e-40f;
+            break; // denormals
+        case 4:
+            v = normal(rng) * 1e30f;
+            break; // huge magnitudes
+        default:
+            v = normal(rng) * 100.0f;
+            break;
         }
         p.data()[i] = v;
     }
     const std::vector<float> before = values_of(p);
     std::vector<size_t> idx(static_cast<size_t>(n));
     std::iota(idx.begin(), idx.end(), size_t(0));
-    std::stable_sort(idx.begin(), idx.end(),
-                     [&](size_t a, size_t b) { return before[a] < before[b]; });
+    std::stable_sort(
+        idx.begin(), idx.end(), [&](size_t a, size_t b) { return before[a] < before[b]; });
     match_histogram(p, rank_table(size_t(n)), HistogramMode::Exact);
     for (size_t r = 0; r < idx.size(); ++r)
         ASSERT_EQ(p.data()[idx[r]], float(r)) << "rank " << r << " value " << before[idx[r]];

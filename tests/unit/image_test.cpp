@@ -38,7 +38,7 @@ TEST(Image, RoundTripThroughImageBufKeepsValuesAndNames)
     for (int y = 0; y < 3; ++y)
         for (int x = 0; x < 4; ++x) {
             float a = 0.25f * float(x + 1);
-            float px[4] = { 0.1f * x * a, 0.2f * y * a, 0.3f * a, a };  // associated
+            float px[4] = { 0.1f * x * a, 0.2f * y * a, 0.3f * a, a }; // associated
             buf.setpixel(x, y, px);
         }
     PlanarImage planes;
@@ -99,10 +99,10 @@ TEST(Image, AtomicWriteLeavesNoTemporaryAndRefusesUnknownFormats)
     OIIO::ImageBuf buf(OIIO::ImageSpec(8, 8, 3, OIIO::TypeFloat));
     std::string error;
     ASSERT_TRUE(write_image_atomic(buf, (dir / "a.exr").string(), OIIO::TypeHalf, error)) << error;
-    EXPECT_FALSE(write_image_atomic(buf, (dir / "a.nosuchformat").string(), OIIO::TypeUnknown,
-                                    error));
-    EXPECT_FALSE(write_image_atomic(buf, (dir / "missing" / "a.exr").string(), OIIO::TypeUnknown,
-                                    error));
+    EXPECT_FALSE(
+        write_image_atomic(buf, (dir / "a.nosuchformat").string(), OIIO::TypeUnknown, error));
+    EXPECT_FALSE(
+        write_image_atomic(buf, (dir / "missing" / "a.exr").string(), OIIO::TypeUnknown, error));
     int files = 0;
     for (auto& e : std::filesystem::directory_iterator(dir))
         files += e.path().filename() == "a.exr" ? 1 : 100;

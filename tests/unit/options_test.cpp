@@ -23,8 +23,9 @@ TEST(Options, ParsesEveryPyramidOptionByName)
     EXPECT_EQ(opt.pyramid, PyramidKind::Laplacian);
     EXPECT_EQ(opt.orientations, 6);
     EXPECT_EQ(opt.histogram, HistogramMode::Bins256);
-    EXPECT_EQ(t.format(opt), "size=640x480:iterations=3:pyramid=laplacian:scales=3:"
-                             "orientations=6:histogram=bins256:fft=kiss");
+    EXPECT_EQ(t.format(opt),
+        "size=640x480:iterations=3:pyramid=laplacian:scales=3:"
+        "orientations=6:histogram=bins256:fft=kiss");
 }
 
 TEST(Options, DefaultsAreThePapers)

@@ -20,7 +20,7 @@ Plane test_image(int w, int h, unsigned seed = 1)
     unsigned s = seed * 2654435761u + 12345u;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            s                 = s * 1664525u + 1013904223u;
+            s = s * 1664525u + 1013904223u;
             const float noise = float(s >> 8) / float(1 << 24);
             p(x, y) = 0.5f + 0.25f * std::sin(0.11f * x + 0.05f * y) + 0.3f * (noise - 0.5f);
         }
@@ -33,8 +33,8 @@ double relative_error(const Plane& a, const Plane& b)
     double err = 0, lo = b.data()[0], hi = b.data()[0];
     for (size_t i = 0; i < b.size(); ++i) {
         err = std::max(err, double(std::abs(a.data()[i] - b.data()[i])));
-        lo  = std::min(lo, double(b.data()[i]));
-        hi  = std::max(hi, double(b.data()[i]));
+        lo = std::min(lo, double(b.data()[i]));
+        hi = std::max(hi, double(b.data()[i]));
     }
     return err / (hi - lo);
 }
@@ -55,8 +55,8 @@ std::vector<FftBackend> backends()
     return b;
 }
 
-std::unique_ptr<Pyramid> steerable(int w, int h, int scales, int orientations,
-                                   FftBackend fft = FftBackend::Kiss)
+std::unique_ptr<Pyramid> steerable(
+    int w, int h, int scales, int orientations, FftBackend fft = FftBackend::Kiss)
 {
     std::string error;
     auto p = make_steerable_pyramid(w, h, scales, orientations, fft, error);
@@ -74,7 +74,7 @@ Plane sinusoid(int w, int h, double fx, double fy, double amplitude = 1.0)
     return p;
 }
 
-}  // namespace
+} // namespace
 
 TEST(Pyramid, Names)
 {
@@ -106,10 +106,11 @@ TEST(Laplacian, BandsAndPerfectReconstruction)
 {
     for (Boundary b : { Boundary::Circular, Boundary::Reflect })
         for (auto [w, h] :
-             std::vector<std::pair<int, int>>{ { 64, 64 }, { 100, 60 }, { 37, 29 } }) {
+            std::vector<std::pair<int, int>> { { 64, 64 }, { 100, 60 }, { 37, 29 } }) {
             auto pyr = make_laplacian_pyramid(w, h, 3, b);
             ASSERT_TRUE(pyr);
-            EXPECT_EQ(pyr->band_names(), (std::vector<std::string>{ "L0", "L1", "L2", "lowpass" }));
+            EXPECT_EQ(
+                pyr->band_names(), (std::vector<std::string> { "L0", "L1", "L2", "lowpass" }));
             const Plane img = test_image(w, h);
             std::vector<Plane> bands;
             pyr->build(img, bands);
@@ -129,21 +130,21 @@ TEST(Laplacian, BandsAndPerfectReconstruction)
 TEST(Laplacian, ConstantImageHasZeroBands)
 {
     for (Boundary b : { Boundary::Circular, Boundary::Reflect })
-        for (auto [w, h] : std::vector<std::pair<int, int>>{ { 64, 64 }, { 37, 29 } }) {
+        for (auto [w, h] : std::vector<std::pair<int, int>> { { 64, 64 }, { 37, 29 } }) {
             auto pyr = make_laplacian_pyramid(w, h, 3, b);
             std::vector<Plane> bands;
             pyr->build(Plane(w, h, 0.37f), bands);
             for (int s = 0; s < 3; ++s)
                 for (size_t i = 0; i < bands[s].size(); ++i)
-                    ASSERT_NEAR(bands[s].data()[i], 0.0f, 1e-7) << s;  // float rounding of 0.37
+                    ASSERT_NEAR(bands[s].data()[i], 0.0f, 1e-7) << s; // float rounding of 0.37
             for (size_t i = 0; i < bands[3].size(); ++i)
-                ASSERT_NEAR(bands[3].data()[i], 0.37f, 1e-7);  // float rounding
+                ASSERT_NEAR(bands[3].data()[i], 0.37f, 1e-7); // float rounding
         }
 }
 
 TEST(Laplacian, ThreadCountIndependent)
 {
-    auto pyr        = make_laplacian_pyramid(100, 60, 3, Boundary::Reflect);
+    auto pyr = make_laplacian_pyramid(100, 60, 3, Boundary::Reflect);
     const Plane img = test_image(100, 60);
     std::vector<Plane> b1, b2;
     pyr->build(img, b1, 1);
@@ -173,13 +174,13 @@ TEST(Steerable, BandNamesAndSizes)
 {
     auto pyr = steerable(200, 121, 3, 2);
     EXPECT_EQ(pyr->band_names(),
-              (std::vector<std::string>{ "highpass", "s0.o0", "s0.o1", "s1.o0", "s1.o1", "s2.o0",
-                                         "s2.o1", "lowpass" }));
+        (std::vector<std::string> {
+            "highpass", "s0.o0", "s0.o1", "s1.o0", "s1.o1", "s2.o0", "s2.o1", "lowpass" }));
     std::vector<Plane> bands;
     pyr->build(test_image(200, 121), bands);
     ASSERT_EQ(bands.size(), 8u);
-    const int expect[8][2] = { { 200, 121 }, { 200, 121 }, { 200, 121 }, { 100, 61 },
-                               { 100, 61 },  { 50, 31 },   { 50, 31 },   { 25, 16 } };
+    const int expect[8][2] = { { 200, 121 }, { 200, 121 }, { 200, 121 }, { 100, 61 }, { 100, 61 },
+        { 50, 31 }, { 50, 31 }, { 25, 16 } };
     for (int i = 0; i < 8; ++i) {
         EXPECT_EQ(bands[i].width(), expect[i][0]) << i;
         EXPECT_EQ(bands[i].height(), expect[i][1]) << i;
@@ -191,12 +192,12 @@ TEST(Steerable, PerfectReconstruction)
     struct Case {
         int w, h, scales;
     };
-    const Case cases[] = { { 256, 256, 4 }, { 200, 120, 4 }, { 640, 480, 5 },
-                           { 257, 131, 4 }, { 33, 17, 4 },   { 16, 16, 4 } };
+    const Case cases[] = { { 256, 256, 4 }, { 200, 120, 4 }, { 640, 480, 5 }, { 257, 131, 4 },
+        { 33, 17, 4 }, { 16, 16, 4 } };
     for (FftBackend fft : backends())
         for (const Case& c : cases)
             for (int k : { 1, 2, 4, 6, 8 }) {
-                auto pyr        = steerable(c.w, c.h, c.scales, k, fft);
+                auto pyr = steerable(c.w, c.h, c.scales, k, fft);
                 const Plane img = test_image(c.w, c.h, unsigned(k));
                 std::vector<Plane> bands;
                 pyr->build(img, bands);
@@ -210,13 +211,13 @@ TEST(Steerable, PerfectReconstruction)
 
 TEST(Steerable, PerfectReconstructionLarge)
 {
-    auto pyr        = steerable(1000, 1000, 5, 4);
+    auto pyr = steerable(1000, 1000, 5, 4);
     const Plane img = test_image(1000, 1000);
     std::vector<Plane> bands;
     pyr->build(img, bands);
     Plane out;
     pyr->collapse(bands, out);
-    EXPECT_LT(relative_error(out, img), 1e-5);  // as above
+    EXPECT_LT(relative_error(out, img), 1e-5); // as above
 }
 
 TEST(Steerable, TightFrame)
@@ -224,10 +225,10 @@ TEST(Steerable, TightFrame)
     // Parseval per band: the band energies, each weighted by its pixel area, add up to the
     // image energy.
     for (auto [w, h] :
-         std::vector<std::pair<int, int>>{ { 256, 256 }, { 200, 120 }, { 257, 131 } }) {
+        std::vector<std::pair<int, int>> { { 256, 256 }, { 200, 120 }, { 257, 131 } }) {
         const int scales = 4;
-        auto pyr         = steerable(w, h, scales, 4);
-        const Plane img  = test_image(w, h, 3);
+        auto pyr = steerable(w, h, scales, 4);
+        const Plane img = test_image(w, h, 3);
         std::vector<Plane> bands;
         pyr->build(img, bands);
         double sum = 0;
@@ -243,21 +244,21 @@ TEST(Steerable, OrientationSelectivity)
     // At r = pi/2, scale 0 holds most of the energy; with K = 4, |G_k|^2 ~ cos^6(theta - pi k/4)
     // puts 80% of it in the matching band (1 / (1 + 2 cos^6(pi/4))).
     const int n = 128;
-    auto pyr    = steerable(n, n, 3, 4);
+    auto pyr = steerable(n, n, 3, 4);
     struct Case {
         double fx, fy;
         int band;
     };
-    for (const Case& c : { Case{ 32, 0, 0 }, Case{ 0, 32, 2 } }) {
+    for (const Case& c : { Case { 32, 0, 0 }, Case { 0, 32, 2 } }) {
         std::vector<Plane> bands;
         pyr->build(sinusoid(n, n, c.fx, c.fy), bands);
         double e[4], total = 0;
         for (int k = 0; k < 4; ++k)
             total += e[k] = energy(bands[1 + size_t(k)]);
-        EXPECT_GT(e[c.band] / total, 0.79) << c.fx << "," << c.fy;  // 0.8 up to rounding
+        EXPECT_GT(e[c.band] / total, 0.79) << c.fx << "," << c.fy; // 0.8 up to rounding
     }
     std::vector<Plane> bands;
-    pyr->build(sinusoid(n, n, 23, 23), bands);  // diagonal: o1 or o3 by the sign of y
+    pyr->build(sinusoid(n, n, 23, 23), bands); // diagonal: o1 or o3 by the sign of y
     const double e1 = energy(bands[2]), e3 = energy(bands[4]);
     EXPECT_GT(std::max(e1, e3), 10 * std::min(e1, e3));
 }
@@ -274,7 +275,7 @@ TEST(Steerable, BandUnitsIndependentOfImageSize)
     for (size_t i = 0; i < bs.size(); ++i) {
         const double rms_s = std::sqrt(energy(bs[i]) / bs[i].size());
         const double rms_l = std::sqrt(energy(bl[i]) / bl[i].size());
-        EXPECT_NEAR(rms_s, rms_l, 1e-4) << small->band_names()[i];  // float rounding
+        EXPECT_NEAR(rms_s, rms_l, 1e-4) << small->band_names()[i]; // float rounding
         some_band_has_it |= rms_s > 0.2;
     }
     EXPECT_TRUE(some_band_has_it);
@@ -283,7 +284,7 @@ TEST(Steerable, BandUnitsIndependentOfImageSize)
 TEST(Steerable, ThreadCountIndependent)
 {
     for (FftBackend fft : backends()) {
-        auto pyr        = steerable(200, 120, 3, 4, fft);
+        auto pyr = steerable(200, 120, 3, 4, fft);
         const Plane img = test_image(200, 120);
         std::vector<Plane> b1, b2;
         pyr->build(img, b1, 1);
@@ -301,15 +302,15 @@ TEST(Steerable, BackendsAgree)
 {
     if (!fft_backend_available(FftBackend::Fftw))
         GTEST_SKIP() << "built without FFTW";
-    auto k          = steerable(200, 120, 3, 4, FftBackend::Kiss);
-    auto f          = steerable(200, 120, 3, 4, FftBackend::Fftw);
+    auto k = steerable(200, 120, 3, 4, FftBackend::Kiss);
+    auto f = steerable(200, 120, 3, 4, FftBackend::Fftw);
     const Plane img = test_image(200, 120);
     std::vector<Plane> bk, bf;
     k->build(img, bk);
     f->build(img, bf);
     for (size_t i = 0; i < bk.size(); ++i)
         for (size_t j = 0; j < bk[i].size(); ++j)
-            ASSERT_NEAR(bk[i].data()[j], bf[i].data()[j], 1e-5) << i;  // float FFT rounding
+            ASSERT_NEAR(bk[i].data()[j], bf[i].data()[j], 1e-5) << i; // float FFT rounding
 }
 
 // ---- Periodic + smooth -------------------------------------------------------------------
@@ -328,7 +329,7 @@ TEST(PeriodicComponent, SmoothPartSolvesPoisson)
                 return double(u.at(i, j, Boundary::Circular)) - p.at(i, j, Boundary::Circular);
             };
             const double lap = s(x - 1, y) + s(x + 1, y) + s(x, y - 1) + s(x, y + 1) - 4 * s(x, y);
-            double v         = 0;
+            double v = 0;
             if (x == 0)
                 v += double(u(w - 1, y)) - u(0, y);
             if (x == w - 1)
@@ -337,7 +338,7 @@ TEST(PeriodicComponent, SmoothPartSolvesPoisson)
                 v += double(u(x, h - 1)) - u(x, 0);
             if (y == h - 1)
                 v += double(u(x, 0)) - u(x, h - 1);
-            EXPECT_NEAR(lap, v, 1e-5) << x << "," << y;  // float FFT of values ~1
+            EXPECT_NEAR(lap, v, 1e-5) << x << "," << y; // float FFT of values ~1
         }
 }
 
@@ -351,10 +352,10 @@ TEST(PeriodicComponent, MatchedEdgesUnchanged)
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             u(x, y) = float(0.5 + 0.3 * std::cos(2 * pi * 3 * (x - (w - 1) / 2.0) / w)
-                            + 0.2 * std::cos(2 * pi * 2 * (y - (h - 1) / 2.0) / h));
+                + 0.2 * std::cos(2 * pi * 2 * (y - (h - 1) / 2.0) / h));
     for (FftBackend fft : backends()) {
         const Plane p = periodic_component(u, fft);
-        EXPECT_LT(relative_error(p, u), 1e-6) << fft_backend_name(fft);  // float rounding
+        EXPECT_LT(relative_error(p, u), 1e-6) << fft_backend_name(fft); // float rounding
     }
 }
 
@@ -366,7 +367,7 @@ TEST(PeriodicComponent, RampBecomesSeamless)
         for (int x = 0; x < w; ++x)
             u(x, y) = float(x) / w + 0.5f * float(y) / h;
     const Plane p = periodic_component(u, FftBackend::Kiss, 2);
-    auto seam     = [&](const Plane& a) {
+    auto seam = [&](const Plane& a) {
         double j = 0;
         for (int y = 0; y < h; ++y)
             j += std::abs(a(w - 1, y) - a(0, y));
@@ -380,7 +381,7 @@ TEST(PeriodicComponent, RampBecomesSeamless)
         mu += u.data()[i];
         mp += p.data()[i];
     }
-    EXPECT_NEAR(mp / p.size(), mu / u.size(), 1e-6);  // s-hat(0,0) = 0; float rounding
+    EXPECT_NEAR(mp / p.size(), mu / u.size(), 1e-6); // s-hat(0,0) = 0; float rounding
 }
 
 // transform_bands is build + modify + collapse with the bands processed in parallel: its
@@ -409,11 +410,11 @@ TEST(Pyramid, TransformBandsEqualsBuildModifyCollapse)
             pyr->transform_bands(result, modified, modify, nthreads);
             ASSERT_EQ(modified.size(), bands.size());
             for (size_t b = 0; b < bands.size(); ++b)
-                ASSERT_TRUE(std::equal(bands[b].data(), bands[b].data() + bands[b].size(),
-                                       modified[b].data()))
+                ASSERT_TRUE(std::equal(
+                    bands[b].data(), bands[b].data() + bands[b].size(), modified[b].data()))
                     << pyr->band_names()[b] << " nthreads " << nthreads;
-            ASSERT_TRUE(std::equal(expected.data(), expected.data() + expected.size(),
-                                   result.data()))
+            ASSERT_TRUE(
+                std::equal(expected.data(), expected.data() + expected.size(), result.data()))
                 << "nthreads " << nthreads;
         }
     }

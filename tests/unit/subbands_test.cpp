@@ -41,7 +41,7 @@ TEST(Subbands, WritesOneNamedPartPerBandWithASharedDisplayWindow)
         EXPECT_EQ(spec.full_width, 96);
         EXPECT_EQ(spec.full_height, 80);
         EXPECT_EQ(spec.get_string_attribute("synth:method"), "pyramid");
-        if (s == 7) {  // sample.s1.o1: 32x32, values exactly as computed
+        if (s == 7) { // sample.s1.o1: 32x32, values exactly as computed
             EXPECT_EQ(spec.width, 32);
             OIIO::ImageBuf part(file, s, 0);
             ASSERT_TRUE(part.read(s, 0, true, OIIO::TypeFloat));

@@ -89,7 +89,7 @@ double axis_energy_fraction(const Plane& p)
     return axis / total;
 }
 
-}  // namespace
+} // namespace
 
 TEST(PyramidSynthesis, OutputHasTheRequestedSizeChannelsAndMetadata)
 {
@@ -103,8 +103,8 @@ TEST(PyramidSynthesis, OutputHasTheRequestedSizeChannelsAndMetadata)
     EXPECT_EQ(out.spec().get_string_attribute("synth:method"), "pyramid");
     EXPECT_EQ(out.spec().get_int_attribute("synth:seed"), 11);
     EXPECT_EQ(out.spec().get_string_attribute("synth:options"),
-              "size=200x72:iterations=2:pyramid=steerable:scales=4:orientations=4:"
-              "histogram=exact:fft=kiss");
+        "size=200x72:iterations=2:pyramid=steerable:scales=4:orientations=4:"
+        "histogram=exact:fft=kiss");
 }
 
 TEST(PyramidSynthesis, BitIdenticalForASeedAtAnyThreadCount)
@@ -118,19 +118,19 @@ TEST(PyramidSynthesis, BitIdenticalForASeedAtAnyThreadCount)
     opt.nthreads = 5;
     OIIO::ImageBuf c = pyramid_synthesize(sample, opt);
     ASSERT_FALSE(a.has_error() || b.has_error() || c.has_error());
-    EXPECT_EQ(OIIO::ImageBufAlgo::computePixelHashSHA1(a),
-              OIIO::ImageBufAlgo::computePixelHashSHA1(b));
-    EXPECT_EQ(OIIO::ImageBufAlgo::computePixelHashSHA1(a),
-              OIIO::ImageBufAlgo::computePixelHashSHA1(c));
+    EXPECT_EQ(
+        OIIO::ImageBufAlgo::computePixelHashSHA1(a), OIIO::ImageBufAlgo::computePixelHashSHA1(b));
+    EXPECT_EQ(
+        OIIO::ImageBufAlgo::computePixelHashSHA1(a), OIIO::ImageBufAlgo::computePixelHashSHA1(c));
     opt.seed = 12;
     OIIO::ImageBuf d = pyramid_synthesize(sample, opt);
-    EXPECT_NE(OIIO::ImageBufAlgo::computePixelHashSHA1(a),
-              OIIO::ImageBufAlgo::computePixelHashSHA1(d));
+    EXPECT_NE(
+        OIIO::ImageBufAlgo::computePixelHashSHA1(a), OIIO::ImageBufAlgo::computePixelHashSHA1(d));
 }
 
 // The quality bar on three real samples: per-channel W1 < 0.005 (values in [0,1])
 // and a wrap seam no rougher than 1.2x the interior.
-class SynthesisQuality : public ::testing::TestWithParam<std::string> {};
+class SynthesisQuality : public ::testing::TestWithParam<std::string> { };
 
 TEST_P(SynthesisQuality, HistogramsMatchAndTheOutputTilesSeamlessly)
 {
@@ -153,7 +153,7 @@ TEST_P(SynthesisQuality, HistogramsMatchAndTheOutputTilesSeamlessly)
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, SynthesisQuality,
-                         ::testing::Values("rust.png", "stucco_yellow.png", "marble_pink.png"));
+    ::testing::Values("rust.png", "stucco_yellow.png", "marble_pink.png"));
 
 TEST(PyramidSynthesis, NonPeriodicSampleGivesNoSeamLikeArtefacts)
 {
@@ -216,7 +216,7 @@ TEST(PyramidSynthesis, LaplacianAndBins256ModesWork)
     OIIO::ImageBuf out = pyramid_synthesize(sample, opt);
     ASSERT_FALSE(out.has_error()) << out.geterror();
     PlanarImage s = planes_of(sample), o = planes_of(out);
-    for (int c = 0; c < 3; ++c)  // 256 bins quantise the cdf: a looser bound than exact mode
+    for (int c = 0; c < 3; ++c) // 256 bins quantise the cdf: a looser bound than exact mode
         EXPECT_LT(wasserstein1(QuantileTable(s.channels[c]), QuantileTable(o.channels[c])), 0.01);
 }
 
@@ -241,7 +241,7 @@ TEST(PyramidSynthesis, DegenerateColoursGiveFiniteCorrectResults)
     imagebuf_from_planes(g, line);
     out = pyramid_synthesize(line, options(64, 64, 2));
     ASSERT_FALSE(out.has_error()) << out.geterror();
-    PlanarImage o = planes_of(out);  // fails on NaN/Inf
+    PlanarImage o = planes_of(out); // fails on NaN/Inf
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x)
             ASSERT_NEAR(o.channels[0](x, y), o.channels[2](x, y), 1e-4f);

@@ -26,8 +26,7 @@ public:
     /// else texsyn's bundled config (compiled into the library; the same file is installed
     /// as share/texsyn/ocio/config.ocio). Returns nullptr and sets `error` (naming the file
     /// and OCIO's message) if the config cannot be read or does not validate.
-    static std::unique_ptr<ColorConfig> load(const std::string& explicit_path,
-                                             std::string& error);
+    static std::unique_ptr<ColorConfig> load(const std::string& explicit_path, std::string& error);
     /// texsyn's bundled config text (YAML).
     static const char* bundled_config_text();
 
@@ -48,7 +47,7 @@ public:
     /// Fails (false, `error` names the unknown space or OCIO's message) without modifying
     /// the image.
     bool convert(PlanarImage& image, const std::string& from, const std::string& to,
-                 std::string& error, int nthreads = 0) const;
+        std::string& error, int nthreads = 0) const;
 
     /// The colour space an image file's pixels are in: `oiio:ColorSpace` from `spec` if the
     /// config knows it, else `fallback` ("" when unknown). 8- and 16-bit integer files
@@ -68,11 +67,11 @@ private:
 /// they get unit scale (no division by zero) and are marked `constant`, so a constant
 /// sample or one whose colours lie on a line or plane gives a finite, correct result.
 struct ColorTransform {
-    int n = 0;                        ///< number of colour channels
-    std::vector<double> mean;         ///< n
-    std::vector<double> forward;      ///< n x n, row-major: M
-    std::vector<double> inverse;      ///< n x n, row-major: M^-1 = U S
-    std::vector<bool> constant;       ///< n: component carries no variance
+    int n = 0;                   ///< number of colour channels
+    std::vector<double> mean;    ///< n
+    std::vector<double> forward; ///< n x n, row-major: M
+    std::vector<double> inverse; ///< n x n, row-major: M^-1 = U S
+    std::vector<bool> constant;  ///< n: component carries no variance
 };
 
 /// Fits the transform to the first `ncolor` channels of `image` (double accumulation in
@@ -85,4 +84,4 @@ void decorrelate(PlanarImage& image, const ColorTransform& t, int nthreads = 0);
 /// Applies y -> M^-1 y + mean to the first t.n channels, in place.
 void recorrelate(PlanarImage& image, const ColorTransform& t, int nthreads = 0);
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -48,13 +48,16 @@ public:
 
     /// Makes a plan, or returns nullptr and sets `error` if the backend is not built in
     /// or the size is < 1.
-    static std::unique_ptr<RealFft2D> create(int width, int height, FftBackend backend,
-                                             std::string& error);
+    static std::unique_ptr<RealFft2D> create(
+        int width, int height, FftBackend backend, std::string& error);
 
 protected:
-    RealFft2D(int width, int height) : m_width(width), m_height(height) {}
+    RealFft2D(int width, int height)
+        : m_width(width)
+        , m_height(height)
+    { }
     int m_width;
     int m_height;
 };
 
-}  // namespace texsyn
+} // namespace texsyn

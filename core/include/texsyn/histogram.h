@@ -15,8 +15,8 @@
 namespace texsyn {
 
 enum class HistogramMode {
-    Exact,    ///< quantile matching: out[rank i] = Q((i + 0.5)/n) — the default
-    Bins256,  ///< the paper's 256-bin cdf / inverse-cdf with linear interpolation
+    Exact,   ///< quantile matching: out[rank i] = Q((i + 0.5)/n) — the default
+    Bins256, ///< the paper's 256-bin cdf / inverse-cdf with linear interpolation
 };
 
 /// "exact" or "bins256".
@@ -29,7 +29,9 @@ public:
     QuantileTable() = default;
     /// Copies and sorts `n` finite values (n >= 1).
     QuantileTable(const float* values, size_t n);
-    explicit QuantileTable(const Plane& plane) : QuantileTable(plane.data(), plane.size()) {}
+    explicit QuantileTable(const Plane& plane)
+        : QuantileTable(plane.data(), plane.size())
+    { }
     /// Builds from values that are already sorted ascending (e.g. read from a file).
     static QuantileTable from_sorted(std::vector<float> sorted);
 
@@ -46,11 +48,11 @@ private:
 /// Replaces the values of `plane` so that their histogram matches `target` (monotone,
 /// order-preserving remap). Exact mode: out[idx[i]] = target.quantile((i + 0.5)/n) where
 /// idx orders the source by value, ties by index. Bins256: the paper's method.
-void match_histogram(Plane& plane, const QuantileTable& target, HistogramMode mode,
-                     int nthreads = 0);
+void match_histogram(
+    Plane& plane, const QuantileTable& target, HistogramMode mode, int nthreads = 0);
 
 /// 1-D Wasserstein distance between the value distributions of `a` and `b`
 /// (mean absolute difference of their quantile functions). Used by quality tests.
 double wasserstein1(const QuantileTable& a, const QuantileTable& b);
 
-}  // namespace texsyn
+} // namespace texsyn

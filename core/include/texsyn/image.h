@@ -58,7 +58,7 @@ int wrap_coordinate(int i, int n, Boundary b);
 struct PlanarImage {
     std::vector<Plane> channels;
     std::vector<std::string> channel_names;
-    int alpha_channel = -1;  ///< index of the alpha channel, or -1
+    int alpha_channel = -1; ///< index of the alpha channel, or -1
 
     int width() const { return channels.empty() ? 0 : channels[0].width(); }
     int height() const { return channels.empty() ? 0 : channels[0].height(); }
@@ -80,4 +80,4 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
 /// Never fails for a well-formed PlanarImage (all planes the same size, >= 1 channel).
 void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst);
 
-}  // namespace texsyn
+} // namespace texsyn

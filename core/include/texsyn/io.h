@@ -28,6 +28,6 @@ bool same_file(const std::string& a, const std::string& b);
 /// leaves no file behind and never an incomplete one. `format` is the pixel type on disk
 /// (TypeUnknown = the buffer's). Fails (false, "FILE: reason").
 bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename,
-                        OIIO::TypeDesc format, std::string& error);
+    OIIO::TypeDesc format, std::string& error);
 
-}  // namespace texsyn
+} // namespace texsyn

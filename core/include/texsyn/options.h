@@ -16,84 +16,83 @@ namespace texsyn {
 /// Parses a decimal integer in [lo, hi]; false (with a message naming `name`, the value
 /// and the range) otherwise.
 bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, int64_t hi,
-                      int64_t& value, std::string& error);
+    int64_t& value, std::string& error);
 /// Parses "WxH" with 1 <= W, H <= hi.
 bool parse_size_option(std::string_view name, std::string_view text, int hi, int& width,
-                       int& height, std::string& error);
+    int& height, std::string& error);
 
 /// One option of an options struct T.
-template <class T> struct OptionField {
+template <class T>
+struct OptionField {
     std::string name;
     std::string help;
-    std::string allowed;  ///< human-readable range or choices, e.g. "1..8" or "exact|bins256"
+    std::string allowed; ///< human-readable range or choices, e.g. "1..8" or "exact|bins256"
     std::function<bool(T&, std::string_view, std::string&)> parse;
     std::function<std::string(const T&)> format;
 };
 
 /// The option table of an options struct T.
-template <class T> class OptionTable {
+template <class T>
+class OptionTable {
 public:
     /// An int member in [lo, hi].
     OptionTable& integer(const char* name, int T::*member, int lo, int hi, const char* help)
     {
         std::string nm = name;
         m_fields.push_back({ nm, help, std::to_string(lo) + ".." + std::to_string(hi),
-                             [=](T& t, std::string_view v, std::string& err) {
-                                 int64_t x = 0;
-                                 if (!parse_int_option(nm, v, lo, hi, x, err))
-                                     return false;
-                                 t.*member = int(x);
-                                 return true;
-                             },
-                             [=](const T& t) { return std::to_string(t.*member); } });
+            [=](T& t, std::string_view v, std::string& err) {
+                int64_t x = 0;
+                if (!parse_int_option(nm, v, lo, hi, x, err))
+                    return false;
+                t.*member = int(x);
+                return true;
+            },
+            [=](const T& t) { return std::to_string(t.*member); } });
         return *this;
     }
     /// Two int members written as "WxH", each in [1, hi]; "0x0" is accepted only when
     /// `zero_means` is not empty (it is then described by it).
-    OptionTable& size(const char* name, int T::*w, int T::*h, int hi, const char* zero_means,
-                      const char* help)
+    OptionTable& size(
+        const char* name, int T::*w, int T::*h, int hi, const char* zero_means, const char* help)
     {
         std::string nm = name;
         std::string zero = zero_means;
         m_fields.push_back({ nm, help, "WxH, 1.." + std::to_string(hi),
-                             [=](T& t, std::string_view v, std::string& err) {
-                                 if (!zero.empty() && v == "0x0") {
-                                     t.*w = t.*h = 0;
-                                     return true;
-                                 }
-                                 return parse_size_option(nm, v, hi, t.*w, t.*h, err);
-                             },
-                             [=](const T& t) {
-                                 return std::to_string(t.*w) + "x" + std::to_string(t.*h);
-                             } });
+            [=](T& t, std::string_view v, std::string& err) {
+                if (!zero.empty() && v == "0x0") {
+                    t.*w = t.*h = 0;
+                    return true;
+                }
+                return parse_size_option(nm, v, hi, t.*w, t.*h, err);
+            },
+            [=](const T& t) { return std::to_string(t.*w) + "x" + std::to_string(t.*h); } });
         return *this;
     }
     /// An enum member chosen by name.
     template <class E>
     OptionTable& choice(const char* name, E T::*member,
-                        std::vector<std::pair<std::string, E>> values, const char* help)
+        std::vector<std::pair<std::string, E>> values, const char* help)
     {
         std::string nm = name;
         std::string allowed;
         for (auto& v : values)
             allowed += (allowed.empty() ? "" : "|") + v.first;
         m_fields.push_back({ nm, help, allowed,
-                             [=](T& t, std::string_view v, std::string& err) {
-                                 for (auto& c : values)
-                                     if (c.first == v) {
-                                         t.*member = c.second;
-                                         return true;
-                                     }
-                                 err = nm + "=" + std::string(v) + " is not one of "
-                                       + allowed;
-                                 return false;
-                             },
-                             [=](const T& t) {
-                                 for (auto& c : values)
-                                     if (c.second == t.*member)
-                                         return c.first;
-                                 return std::string("?");
-                             } });
+            [=](T& t, std::string_view v, std::string& err) {
+                for (auto& c : values)
+                    if (c.first == v) {
+                        t.*member = c.second;
+                        return true;
+                    }
+                err = nm + "=" + std::string(v) + " is not one of " + allowed;
+                return false;
+            },
+            [=](const T& t) {
+                for (auto& c : values)
+                    if (c.second == t.*member)
+                        return c.first;
+                return std::string("?");
+            } });
         return *this;
     }
 
@@ -140,7 +139,6 @@ private:
 /// Splits "name=value:name=value" into pairs. False (message names the malformed piece)
 /// if a piece has no '=' or an empty name.
 bool split_option_string(std::string_view text,
-                         std::vector<std::pair<std::string, std::string>>& pairs,
-                         std::string& error);
+    std::vector<std::pair<std::string, std::string>>& pairs, std::string& error);
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -44,8 +44,8 @@ public:
     /// Decomposes `image` (width x height) into nbands() planes (resized as needed).
     virtual void build(const Plane& image, std::vector<Plane>& bands, int nthreads = 0) const = 0;
     /// Reconstructs the image from bands shaped as build() makes them.
-    virtual void collapse(const std::vector<Plane>& bands, Plane& image,
-                          int nthreads = 0) const = 0;
+    virtual void collapse(
+        const std::vector<Plane>& bands, Plane& image, int nthreads = 0) const = 0;
 
     /// Called once per band with (band index, band); may modify the band. Must be safe to
     /// call concurrently for different bands.
@@ -56,10 +56,13 @@ public:
     /// transforms and `modify` run on one thread), which scales far better than
     /// parallelising each transform. `bands` receives the modified bands.
     virtual void transform_bands(Plane& image, std::vector<Plane>& bands,
-                                 const BandFunction& modify, int nthreads = 0) const;
+        const BandFunction& modify, int nthreads = 0) const;
 
 protected:
-    Pyramid(int width, int height) : m_width(width), m_height(height) {}
+    Pyramid(int width, int height)
+        : m_width(width)
+        , m_height(height)
+    { }
     int m_width;
     int m_height;
     std::vector<std::string> m_names;
@@ -74,8 +77,8 @@ int max_pyramid_scales(int sample_width, int sample_height);
 /// ceil(n/2)); expand = insert zeros, blur, x4. Bands are G_k - expand(G_{k+1}), exact for
 /// any size and either boundary. `boundary`: Circular for synthesis, Reflect for analysis
 /// (§3.4). Requires 1 <= scales and width, height >= 2^scales.
-std::unique_ptr<Pyramid> make_laplacian_pyramid(int width, int height, int scales,
-                                                Boundary boundary);
+std::unique_ptr<Pyramid> make_laplacian_pyramid(
+    int width, int height, int scales, Boundary boundary);
 
 /// Steerable pyramid, Fourier-domain and self-inverting (a tight frame): high-pass
 /// residual, `scales` levels of `orientations` (1..8) oriented bands, low-pass residual.
@@ -86,13 +89,12 @@ std::unique_ptr<Pyramid> make_laplacian_pyramid(int width, int height, int scale
 /// circular; analyse a non-periodic sample through periodic_component() first.
 /// Returns nullptr and sets `error` if the FFT backend is unavailable or the arguments
 /// are out of range.
-std::unique_ptr<Pyramid> make_steerable_pyramid(int width, int height, int scales,
-                                                int orientations, FftBackend fft,
-                                                std::string& error);
+std::unique_ptr<Pyramid> make_steerable_pyramid(
+    int width, int height, int scales, int orientations, FftBackend fft, std::string& error);
 
 /// Moisan's periodic + smooth decomposition (notes/pyramid-math.md): returns the periodic
 /// component p of `image` (same size and mean), whose spectrum has none of the cross-shaped
 /// energy that the jump between opposite edges puts into a circular transform.
 Plane periodic_component(const Plane& image, FftBackend fft, int nthreads = 0);
 
-}  // namespace texsyn
+} // namespace texsyn

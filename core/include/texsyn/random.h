@@ -15,4 +15,4 @@ uint64_t random_bits(uint64_t seed, uint64_t stream, uint64_t index);
 /// mantissa bits. Pure function; thread safe.
 float random_uniform(uint64_t seed, uint64_t stream, uint64_t index);
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -20,6 +20,6 @@ namespace texsyn {
 /// Metadata of `synth` is copied to every part. The file is written atomically (temporary
 /// file + rename). Fails (false, `error`) if the file cannot be written.
 bool write_subband_exr(const std::string& filename, const OIIO::ImageBuf& synth,
-                       const std::vector<NamedImage>& subbands, std::string& error);
+    const std::vector<NamedImage>& subbands, std::string& error);
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -31,16 +31,16 @@ namespace texsyn {
 
 /// Options of the pyramid method. Defaults are Heeger & Bergen's.
 struct PyramidOptions {
-    int width = 0;                   ///< output size; 0x0 = the sample's size
+    int width = 0; ///< output size; 0x0 = the sample's size
     int height = 0;
-    int iterations = 5;              ///< §3.3: "about 5 iterations"
+    int iterations = 5; ///< §3.3: "about 5 iterations"
     PyramidKind pyramid = PyramidKind::Steerable;
-    int scales = 0;                  ///< 0 = max_pyramid_scales(sample)
-    int orientations = 4;            ///< steerable bands per scale, 1..8
+    int scales = 0;       ///< 0 = max_pyramid_scales(sample)
+    int orientations = 4; ///< steerable bands per scale, 1..8
     HistogramMode histogram = HistogramMode::Exact;
     FftBackend fft = FftBackend::Kiss;
-    uint64_t seed = 0;               ///< set by the tool's --seed, not a `:name=` option
-    int nthreads = 0;                ///< 0 = OIIO's default; never changes the result
+    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
+    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) after each iteration of each channel, from the
     /// calling thread; may be empty. Not an option: it never changes the result.
     std::function<void(float)> progress;
@@ -55,12 +55,11 @@ struct PyramidOptions {
 /// A named multi-channel image: one subband of one pyramid (for --subbands output).
 struct NamedImage {
     std::string name;  ///< e.g. "sample.s2.o1", "synth.highpass", "synth.L3"
-    PlanarImage image;  ///< channels pc0, pc1, … (decorrelated colour) plus A if alpha
+    PlanarImage image; ///< channels pc0, pc1, … (decorrelated colour) plus A if alpha
 };
 
 /// Bytes of memory a synthesis of this size needs (the estimate the size check uses).
-size_t pyramid_memory_estimate(int width, int height, int nchannels,
-                               const PyramidOptions& opt);
+size_t pyramid_memory_estimate(int width, int height, int nchannels, const PyramidOptions& opt);
 
 /// Heeger & Bergen 1995 §3.3 match-texture with §3.4 edge handling and §3.5 colour.
 /// Decorrelates the sample's colour channels (PCA), analyses each component (steerable
@@ -76,11 +75,11 @@ size_t pyramid_memory_estimate(int width, int height, int nchannels,
 /// If `subbands` is not null it receives the sample's and the final synthesis's subbands
 /// (names "sample.<band>" and "synth.<band>").
 bool pyramid_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample,
-                        const PyramidOptions& opt, std::vector<NamedImage>* subbands = nullptr);
+    const PyramidOptions& opt, std::vector<NamedImage>* subbands = nullptr);
 OIIO::ImageBuf pyramid_synthesize(const OIIO::ImageBuf& sample, const PyramidOptions& opt,
-                                  std::vector<NamedImage>* subbands = nullptr);
+    std::vector<NamedImage>* subbands = nullptr);
 
 /// texsyn's version string, e.g. "0.1.0".
 const char* version();
 
-}  // namespace texsyn
+} // namespace texsyn

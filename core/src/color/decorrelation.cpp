@@ -30,10 +30,10 @@ void fix_sign(Eigen::Ref<Eigen::VectorXd> v)
 
 // out_r = add_r + sum_c m[r*n + c] * (in_c - sub_c) over the first n channels, in place.
 void apply_affine(PlanarImage& image, int n, const std::vector<double>& m,
-                  const std::vector<double>& sub, const std::vector<double>& add, int nthreads)
+    const std::vector<double>& sub, const std::vector<double>& add, int nthreads)
 {
     if (n < 1 || image.nchannels() < n)
-        return;  // not fitted to this image: leave it alone
+        return; // not fitted to this image: leave it alone
     std::vector<float*> ch(size_t(n), nullptr);
     for (int c = 0; c < n; ++c)
         ch[size_t(c)] = image.channels[size_t(c)].data();
@@ -41,7 +41,7 @@ void apply_affine(PlanarImage& image, int n, const std::vector<double>& m,
     OIIO::parallel_for_chunked(
         0, npix, int64_t(1) << 14,
         [&](int64_t begin, int64_t end) {
-            std::vector<double> x(static_cast<size_t>(n)), y(x.size());  // per chunk: negligible
+            std::vector<double> x(static_cast<size_t>(n)), y(x.size()); // per chunk: negligible
             for (int64_t i = begin; i < end; ++i) {
                 for (int c = 0; c < n; ++c)
                     x[size_t(c)] = double(ch[size_t(c)][i]) - sub[size_t(c)];
@@ -58,7 +58,7 @@ void apply_affine(PlanarImage& image, int n, const std::vector<double>& m,
         OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
 }
 
-}  // namespace
+} // namespace
 
 ColorTransform fit_color_transform(const PlanarImage& image, int ncolor)
 {
@@ -103,8 +103,8 @@ ColorTransform fit_color_transform(const PlanarImage& image, int ncolor)
         const double scale = constant ? 1.0 : s[k];
         t.constant[size_t(k)] = constant;
         for (int c = 0; c < n; ++c) {
-            t.forward[size_t(k * n + c)] = u(c, k) / scale;  // M = S^-1 U^T
-            t.inverse[size_t(c * n + k)] = u(c, k) * scale;  // M^-1 = U S
+            t.forward[size_t(k * n + c)] = u(c, k) / scale; // M = S^-1 U^T
+            t.inverse[size_t(c * n + k)] = u(c, k) * scale; // M^-1 = U S
         }
     }
     return t;
@@ -122,4 +122,4 @@ void recorrelate(PlanarImage& image, const ColorTransform& t, int nthreads)
     apply_affine(image, t.n, t.inverse, zero, t.mean, nthreads);
 }
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -27,8 +27,7 @@ struct ColorConfig::Impl {
 
 ColorConfig::ColorConfig(std::unique_ptr<Impl> impl)
     : m_impl(std::move(impl))
-{
-}
+{ }
 ColorConfig::~ColorConfig() = default;
 ColorConfig::ColorConfig(ColorConfig&&) noexcept = default;
 ColorConfig& ColorConfig::operator=(ColorConfig&&) noexcept = default;
@@ -38,8 +37,7 @@ const char* ColorConfig::bundled_config_text()
     return texsyn_bundled_ocio_config;
 }
 
-std::unique_ptr<ColorConfig> ColorConfig::load(const std::string& explicit_path,
-                                               std::string& error)
+std::unique_ptr<ColorConfig> ColorConfig::load(const std::string& explicit_path, std::string& error)
 {
     std::string path = explicit_path;
     if (path.empty()) {
@@ -57,7 +55,7 @@ std::unique_ptr<ColorConfig> ColorConfig::load(const std::string& explicit_path,
             impl->config = OCIO::Config::CreateFromFile(path.c_str());
         }
         impl->config->validate();
-    } catch (const std::exception& e) {  // OCIO::Exception is a std::runtime_error
+    } catch (const std::exception& e) { // OCIO::Exception is a std::runtime_error
         error = "colour config '" + impl->source + "': " + e.what();
         return nullptr;
     } catch (...) {
@@ -101,8 +99,8 @@ std::vector<std::string> ColorConfig::colorspace_names() const
     std::vector<std::string> names;
     names.reserve(size_t(n));
     for (int i = 0; i < n; ++i)
-        names.emplace_back(cfg->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL,
-                                                         OCIO::COLORSPACE_ALL, i));
+        names.emplace_back(cfg->getColorSpaceNameByIndex(
+            OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL, i));
     return names;
 }
 
@@ -110,8 +108,8 @@ namespace {
 
 // Runs fn(y0, y1) over blocks of ~16k pixels in parallel and returns the first error
 // message ("" if none): exceptions must not escape a pool thread.
-std::string for_row_blocks(int width, int height, int nthreads,
-                           const std::function<void(int64_t, int64_t)>& fn)
+std::string for_row_blocks(
+    int width, int height, int nthreads, const std::function<void(int64_t, int64_t)>& fn)
 {
     std::mutex mutex;
     std::string error;
@@ -130,13 +128,13 @@ std::string for_row_blocks(int width, int height, int nthreads,
     return error;
 }
 
-std::string convert_rgb(const OCIO::ConstCPUProcessorRcPtr& cpu, Plane& r, Plane& g, Plane& b,
-                        int nthreads)
+std::string convert_rgb(
+    const OCIO::ConstCPUProcessorRcPtr& cpu, Plane& r, Plane& g, Plane& b, int nthreads)
 {
     const int w = r.width();
     return for_row_blocks(w, r.height(), nthreads, [&](int64_t y0, int64_t y1) {
-        OCIO::PlanarImageDesc desc(r.row(int(y0)), g.row(int(y0)), b.row(int(y0)), nullptr, w,
-                                   long(y1 - y0));
+        OCIO::PlanarImageDesc desc(
+            r.row(int(y0)), g.row(int(y0)), b.row(int(y0)), nullptr, w, long(y1 - y0));
         cpu->apply(desc);
     });
 }
@@ -158,15 +156,15 @@ std::string convert_grey(const OCIO::ConstCPUProcessorRcPtr& cpu, Plane& grey, i
     });
 }
 
-}  // namespace
+} // namespace
 
 bool ColorConfig::convert(PlanarImage& image, const std::string& from, const std::string& to,
-                          std::string& error, int nthreads) const
+    std::string& error, int nthreads) const
 {
     for (const std::string* name : { &from, &to }) {
         if (resolve(*name).empty()) {
-            error = "unknown colour space '" + *name + "' (known: "
-                    + OIIO::Strutil::join(colorspace_names(), ", ") + ")";
+            error = "unknown colour space '" + *name
+                + "' (known: " + OIIO::Strutil::join(colorspace_names(), ", ") + ")";
             return false;
         }
     }
@@ -209,12 +207,15 @@ std::string ColorConfig::guess_colorspace(const OIIO::ImageSpec& spec) const
     case OIIO::TypeDesc::UINT8:
     case OIIO::TypeDesc::INT8:
     case OIIO::TypeDesc::UINT16:
-    case OIIO::TypeDesc::INT16: return resolve("sRGB - Texture");
+    case OIIO::TypeDesc::INT16:
+        return resolve("sRGB - Texture");
     case OIIO::TypeDesc::HALF:
     case OIIO::TypeDesc::FLOAT:
-    case OIIO::TypeDesc::DOUBLE: return scene_linear();
-    default: return "";
+    case OIIO::TypeDesc::DOUBLE:
+        return scene_linear();
+    default:
+        return "";
     }
 }
 
-}  // namespace texsyn
+} // namespace texsyn

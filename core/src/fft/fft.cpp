@@ -28,17 +28,17 @@ const char* fft_backend_name(FftBackend backend)
     return backend == FftBackend::Fftw ? "fftw" : "kiss";
 }
 
-std::unique_ptr<RealFft2D> RealFft2D::create(int width, int height, FftBackend backend,
-                                             std::string& error)
+std::unique_ptr<RealFft2D> RealFft2D::create(
+    int width, int height, FftBackend backend, std::string& error)
 {
     if (width < 1 || height < 1) {
         error = "FFT size " + std::to_string(width) + "x" + std::to_string(height)
-                + " is invalid (width and height must be >= 1)";
+            + " is invalid (width and height must be >= 1)";
         return nullptr;
     }
     if (!fft_backend_available(backend)) {
         error = std::string("FFT backend '") + fft_backend_name(backend)
-                + "' is not built into this texsyn (configure with -DTEXSYN_WITH_FFTW=ON)";
+            + "' is not built into this texsyn (configure with -DTEXSYN_WITH_FFTW=ON)";
         return nullptr;
     }
     try {
@@ -49,9 +49,9 @@ std::unique_ptr<RealFft2D> RealFft2D::create(int width, int height, FftBackend b
         return make_kiss_fft(width, height);
     } catch (const std::bad_alloc&) {
         error = "out of memory planning a " + std::to_string(width) + "x" + std::to_string(height)
-                + " FFT";
+            + " FFT";
         return nullptr;
     }
 }
 
-}  // namespace texsyn
+} // namespace texsyn

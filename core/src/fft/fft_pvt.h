@@ -13,4 +13,4 @@ std::unique_ptr<RealFft2D> make_kiss_fft(int width, int height);
 std::unique_ptr<RealFft2D> make_fftw_fft(int width, int height);
 #endif
 
-}  // namespace texsyn
+} // namespace texsyn

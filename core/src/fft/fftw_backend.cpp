@@ -28,8 +28,8 @@ public:
         : RealFft2D(width, height)
     {
         std::lock_guard<std::mutex> lock(planner_mutex());
-        float* real          = fftwf_alloc_real(size_t(width) * size_t(height));
-        fftwf_complex* spec  = fftwf_alloc_complex(spectrum_size());
+        float* real = fftwf_alloc_real(size_t(width) * size_t(height));
+        fftwf_complex* spec = fftwf_alloc_complex(spectrum_size());
         const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED;
         if (real && spec) {
             m_r2c = fftwf_plan_dft_r2c_2d(height, width, real, spec, flags);
@@ -61,7 +61,7 @@ public:
         copy.assign(in, in + spectrum_size());
         fftwf_execute_dft_c2r(m_c2r, reinterpret_cast<fftwf_complex*>(copy.data()), out);
         const float scale = float(1.0 / (double(m_width) * double(m_height)));
-        const size_t n    = size_t(m_width) * size_t(m_height);
+        const size_t n = size_t(m_width) * size_t(m_height);
         for (size_t i = 0; i < n; ++i)
             out[i] *= scale;
     }
@@ -80,11 +80,11 @@ private:
     fftwf_plan m_c2r = nullptr;
 };
 
-}  // namespace
+} // namespace
 
 std::unique_ptr<RealFft2D> make_fftw_fft(int width, int height)
 {
     return std::make_unique<FftwFft2D>(width, height);
 }
 
-}  // namespace texsyn
+} // namespace texsyn

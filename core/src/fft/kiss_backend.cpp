@@ -39,16 +39,16 @@ public:
             throw std::bad_alloc();
     }
     ~KissCfg() { kiss_fft_free(m_cfg); }
-    KissCfg(const KissCfg&)            = delete;
+    KissCfg(const KissCfg&) = delete;
     KissCfg& operator=(const KissCfg&) = delete;
 
     void run(const Cpx* in, Cpx* out) const
     {
-        if (m_n == 1)  // kiss_fft's generic radix path is not meant for n = 1
+        if (m_n == 1) // kiss_fft's generic radix path is not meant for n = 1
             out[0] = in[0];
         else
             kiss_fft(m_cfg, reinterpret_cast<const kiss_fft_cpx*>(in),
-                     reinterpret_cast<kiss_fft_cpx*>(out));
+                reinterpret_cast<kiss_fft_cpx*>(out));
     }
 
 private:
@@ -79,7 +79,7 @@ public:
             return;
         }
         m_shared.busy = true;
-        m_owner       = true;
+        m_owner = true;
         if (m_shared.data.size() < n)
             m_shared.data.resize(n);
         m_data = m_shared.data.data();
@@ -89,7 +89,7 @@ public:
         if (m_owner)
             m_shared.busy = false;
     }
-    SpectrumScratch(const SpectrumScratch&)            = delete;
+    SpectrumScratch(const SpectrumScratch&) = delete;
     SpectrumScratch& operator=(const SpectrumScratch&) = delete;
     Cpx* data() { return m_data; }
 
@@ -105,7 +105,7 @@ private:
     }
     Shared& m_shared;
     std::vector<Cpx> m_own;
-    Cpx* m_data  = nullptr;
+    Cpx* m_data = nullptr;
     bool m_owner = false;
 };
 
@@ -117,8 +117,7 @@ public:
         , m_row_inv(width, true)
         , m_col_fwd(height, false)
         , m_col_inv(height, true)
-    {
-    }
+    { }
 
     void forward(const float* in, Cpx* out, int nthreads) const override
     {
@@ -126,13 +125,13 @@ public:
         OIIO::parallel_for_range(
             int64_t(0), (h + 1) / 2,
             [&](int64_t begin, int64_t end) {
-                Cpx* z  = task_scratch(2 * size_t(w));
+                Cpx* z = task_scratch(2 * size_t(w));
                 Cpx* zf = z + w;
                 for (int64_t p = begin; p < end; ++p) {
                     const int64_t y0 = 2 * p;
-                    const bool pair  = y0 + 1 < h;
-                    const float* a   = in + y0 * w;
-                    const float* b   = a + w;
+                    const bool pair = y0 + 1 < h;
+                    const float* a = in + y0 * w;
+                    const float* b = a + w;
                     for (int64_t x = 0; x < w; ++x)
                         z[x] = Cpx(a[x], pair ? b[x] : 0.0f);
                     m_row_fwd.run(z, zf);
@@ -143,10 +142,10 @@ public:
                     for (int64_t k = 0; k < wc; ++k) {
                         const Cpx zk = zf[k];
                         const Cpx zc = std::conj(zf[k == 0 ? 0 : w - k]);
-                        oa[k]        = 0.5f * (zk + zc);
+                        oa[k] = 0.5f * (zk + zc);
                         if (pair)
-                            ob[k] = Cpx(0.5f * (zk.imag() - zc.imag()),
-                                        -0.5f * (zk.real() - zc.real()));
+                            ob[k] = Cpx(
+                                0.5f * (zk.imag() - zc.imag()), -0.5f * (zk.real() - zc.real()));
                     }
                 }
             },
@@ -164,13 +163,13 @@ public:
         OIIO::parallel_for_range(
             int64_t(0), (h + 1) / 2,
             [&](int64_t begin, int64_t end) {
-                Cpx* z  = task_scratch(2 * size_t(w));
+                Cpx* z = task_scratch(2 * size_t(w));
                 Cpx* zf = z + w;
                 for (int64_t p = begin; p < end; ++p) {
                     const int64_t y0 = 2 * p;
-                    const bool pair  = y0 + 1 < h;
-                    const Cpx* a     = spec + y0 * wc;
-                    const Cpx* b     = a + wc;
+                    const bool pair = y0 + 1 < h;
+                    const Cpx* a = spec + y0 * wc;
+                    const Cpx* b = a + wc;
                     // Z = A + iB over the full row from the Hermitian halves; the imaginary
                     // parts of the self-conjugate bins (DC, even-width Nyquist) are dropped,
                     // as a c2r transform does.
@@ -182,7 +181,7 @@ public:
                             z[k] = Cpx(ak.real(), bk.real());
                             continue;
                         }
-                        z[k]     = Cpx(ak.real() - bk.imag(), ak.imag() + bk.real());
+                        z[k] = Cpx(ak.real() - bk.imag(), ak.imag() + bk.real());
                         z[w - k] = Cpx(ak.real() + bk.imag(), bk.real() - ak.imag());
                     }
                     m_row_inv.run(z, zf);
@@ -209,7 +208,7 @@ private:
             int64_t(0), nblocks,
             [&](int64_t begin, int64_t end) {
                 Cpx* gathered = task_scratch(2 * size_t(column_block * h));
-                Cpx* result   = gathered + column_block * h;
+                Cpx* result = gathered + column_block * h;
                 for (int64_t blk = begin; blk < end; ++blk) {
                     const int64_t c0 = blk * column_block;
                     const int64_t nc = std::min(column_block, wc - c0);
@@ -233,11 +232,11 @@ private:
     KissCfg m_row_fwd, m_row_inv, m_col_fwd, m_col_inv;
 };
 
-}  // namespace
+} // namespace
 
 std::unique_ptr<RealFft2D> make_kiss_fft(int width, int height)
 {
     return std::make_unique<KissFft2D>(width, height);
 }
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -14,7 +14,7 @@ namespace histogram_pvt {
 inline float quantile_of_sorted(const float* s, size_t m, double u)
 {
     const double pos = u * double(m) - 0.5;
-    if (!(pos > 0.0))  // also catches NaN u
+    if (!(pos > 0.0)) // also catches NaN u
         return s[0];
     if (pos >= double(m - 1))
         return s[m - 1];
@@ -30,5 +30,5 @@ inline float quantile_of_sorted(const float* s, size_t m, double u)
 /// until the calling thread's next call. Requires n < 2^32.
 const uint64_t* rank_by_value(const float* values, size_t n, int nthreads);
 
-}  // namespace histogram_pvt
-}  // namespace texsyn
+} // namespace histogram_pvt
+} // namespace texsyn

@@ -14,8 +14,10 @@ namespace texsyn {
 const char* histogram_mode_name(HistogramMode mode)
 {
     switch (mode) {
-    case HistogramMode::Exact: return "exact";
-    case HistogramMode::Bins256: return "bins256";
+    case HistogramMode::Exact:
+        return "exact";
+    case HistogramMode::Bins256:
+        return "bins256";
     }
     return "unknown";
 }
@@ -51,7 +53,7 @@ void match_exact(Plane& plane, const QuantileTable& target, int nthreads)
 }
 
 constexpr int kBins = 256;
-using Cdf = std::array<double, kBins + 1>;  // cdf at the kBins+1 bin edges
+using Cdf = std::array<double, kBins + 1>; // cdf at the kBins+1 bin edges
 
 inline int bin_of(double v, double lo, double width)
 {
@@ -96,7 +98,7 @@ void match_bins256(Plane& plane, const QuantileTable& target, int nthreads)
     const std::vector<float>& t = target.sorted();
     const double tmin = t.front(), tmax = t.back();
     const double twidth = (tmax - tmin) / kBins;
-    Cdf tcdf{};
+    Cdf tcdf {};
     if (tmax > tmin)
         tcdf = cdf_at_edges(t.data(), t.size(), tmin, twidth, nthreads);
     // Inverse of the piecewise-linear target cdf; empty bins (flat cdf) are skipped.
@@ -126,17 +128,16 @@ void match_bins256(Plane& plane, const QuantileTable& target, int nthreads)
             for (int64_t i = begin; i < end; ++i) {
                 const double x = (double(v[i]) - smin) / swidth;
                 const int k = std::min(kBins - 1, int(x));
-                const double f = std::min(1.0, x - k);  // x may round to just above 256
+                const double f = std::min(1.0, x - k); // x may round to just above 256
                 v[i] = float(lut[k] + f * (lut[k + 1] - lut[k]));
             }
         },
         chunk_opt(nthreads));
 }
 
-}  // namespace
+} // namespace
 
-void match_histogram(Plane& plane, const QuantileTable& target, HistogramMode mode,
-                     int nthreads)
+void match_histogram(Plane& plane, const QuantileTable& target, HistogramMode mode, int nthreads)
 {
     // Nothing to match to (or nothing to change): leave the plane as it is.
     if (plane.empty() || target.empty())
@@ -147,4 +148,4 @@ void match_histogram(Plane& plane, const QuantileTable& target, HistogramMode mo
         match_exact(plane, target, nthreads);
 }
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -59,7 +59,7 @@ double abs_linear_integral(double d0, double d1, double len)
     return 0.5 * (d0 * d0 + d1 * d1) / (std::abs(d0) + std::abs(d1)) * len;
 }
 
-}  // namespace
+} // namespace
 
 // Exact: both quantile functions are piecewise linear with knots at (k + 0.5)/m, so
 // integrating |Qa - Qb| over the merged knots (plus 0 and 1) is exact up to rounding.
@@ -89,4 +89,4 @@ double wasserstein1(const QuantileTable& a, const QuantileTable& b)
     return sum;
 }
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -69,7 +69,7 @@ void count_digits(const float* values, size_t n, Histograms& total, Scratch& s, 
             total[j] += h[j];
 }
 
-}  // namespace
+} // namespace
 
 const uint64_t* rank_by_value(const float* values, size_t n, int nthreads)
 {
@@ -80,13 +80,13 @@ const uint64_t* rank_by_value(const float* values, size_t n, int nthreads)
     s.b.resize(n);
 
     const uint32_t first_key = monotone_key(values[0]);
-    const uint64_t* src = nullptr;  // nullptr: read keys from `values` in index order
+    const uint64_t* src = nullptr; // nullptr: read keys from `values` in index order
     uint64_t* dst = s.a.data();
     std::array<size_t, kBuckets> offset;
     for (int p = 0; p < kPasses; ++p) {
         const uint32_t* h = hist.data() + p * kBuckets;
         if (h[digit(first_key, p)] == n)
-            continue;  // every key has this digit: a stable pass would not move anything
+            continue; // every key has this digit: a stable pass would not move anything
         size_t sum = 0;
         for (uint32_t d = 0; d < kBuckets; ++d) {
             offset[d] = sum;
@@ -110,5 +110,5 @@ const uint64_t* rank_by_value(const float* values, size_t n, int nthreads)
     return src;
 }
 
-}  // namespace histogram_pvt
-}  // namespace texsyn
+} // namespace histogram_pvt
+} // namespace texsyn

@@ -46,8 +46,8 @@ std::string temporary_path_for(const std::string& filename)
 {
     static std::atomic<unsigned> counter { 0 };
     fs::path p(filename);
-    std::string name = "." + p.stem().string() + ".texsyn-tmp" + std::to_string(::getpid())
-                       + "-" + std::to_string(counter++) + p.extension().string();
+    std::string name = "." + p.stem().string() + ".texsyn-tmp" + std::to_string(::getpid()) + "-"
+        + std::to_string(counter++) + p.extension().string();
     return (p.parent_path() / name).string();
 }
 
@@ -71,7 +71,7 @@ bool same_file(const std::string& a, const std::string& b)
 }
 
 bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename,
-                        OIIO::TypeDesc format, std::string& error)
+    OIIO::TypeDesc format, std::string& error)
 {
     std::error_code ec;
     fs::path parent = fs::path(filename).parent_path();
@@ -83,7 +83,7 @@ bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename
     if (!out) {
         (void)OIIO::geterror();
         error = filename + ": cannot write (no image format for extension '"
-                + fs::path(filename).extension().string() + "')";
+            + fs::path(filename).extension().string() + "')";
         return false;
     }
     out.reset();
@@ -100,4 +100,4 @@ bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename
     return commit_file(tmp, filename, error);
 }
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -3,15 +3,13 @@
 
 #include <cmath>
 
-
 namespace texsyn {
 
 Plane::Plane(int width, int height, float value)
     : m_width(width)
     , m_height(height)
     , m_data(size_t(width) * size_t(height), value)
-{
-}
+{ }
 
 int wrap_coordinate(int i, int n, Boundary b)
 {
@@ -64,8 +62,8 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
         out.alpha_channel = -1;
     for (int c = 0; c < nc; ++c) {
         out.channels.emplace_back(w, h);
-        out.channel_names.push_back(c < int(spec.channelnames.size()) ? spec.channelnames[c]
-                                                                       : "c" + std::to_string(c));
+        out.channel_names.push_back(
+            c < int(spec.channelnames.size()) ? spec.channelnames[c] : "c" + std::to_string(c));
     }
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
@@ -73,10 +71,9 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
             for (int c = 0; c < nc; ++c) {
                 if (!std::isfinite(p[c])) {
                     error = "pixel (" + std::to_string(x + spec.x) + ", "
-                            + std::to_string(y + spec.y) + ") channel "
-                            + out.channel_names[c] + " is "
-                            + (std::isnan(p[c]) ? "NaN" : "infinite")
-                            + "; texsyn needs finite pixel values";
+                        + std::to_string(y + spec.y) + ") channel " + out.channel_names[c] + " is "
+                        + (std::isnan(p[c]) ? "NaN" : "infinite")
+                        + "; texsyn needs finite pixel values";
                     return false;
                 }
                 out.channels[c](x, y) = p[c];
@@ -113,4 +110,4 @@ void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst)
     dst.set_pixels(dst.roi(), OIIO::TypeFloat, pixels.data());
 }
 
-}  // namespace texsyn
+} // namespace texsyn

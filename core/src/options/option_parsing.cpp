@@ -7,7 +7,7 @@
 namespace texsyn {
 
 bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, int64_t hi,
-                      int64_t& value, std::string& error)
+    int64_t& value, std::string& error)
 {
     int64_t v = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
@@ -17,7 +17,7 @@ bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, 
     }
     if (v < lo || v > hi) {
         error = std::string(name) + "=" + std::string(text) + " is out of range ("
-                + std::to_string(lo) + ".." + std::to_string(hi) + ")";
+            + std::to_string(lo) + ".." + std::to_string(hi) + ")";
         return false;
     }
     value = v;
@@ -25,7 +25,7 @@ bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, 
 }
 
 bool parse_size_option(std::string_view name, std::string_view text, int hi, int& width,
-                       int& height, std::string& error)
+    int& height, std::string& error)
 {
     size_t x = text.find('x');
     int64_t w = 0, h = 0;
@@ -34,12 +34,12 @@ bool parse_size_option(std::string_view name, std::string_view text, int hi, int
         || !parse_int_option(name, text.substr(0, x), 0, INT64_MAX, w, ignored)
         || !parse_int_option(name, text.substr(x + 1), 0, INT64_MAX, h, ignored)) {
         error = std::string(name) + "=" + std::string(text)
-                + " is not a size (expected WxH, e.g. 1024x1024)";
+            + " is not a size (expected WxH, e.g. 1024x1024)";
         return false;
     }
     if (w < 1 || h < 1 || w > hi || h > hi) {
         error = std::string(name) + "=" + std::string(text) + " is out of range (each side 1.."
-                + std::to_string(hi) + ")";
+            + std::to_string(hi) + ")";
         return false;
     }
     width = int(w);
@@ -48,8 +48,7 @@ bool parse_size_option(std::string_view name, std::string_view text, int hi, int
 }
 
 bool split_option_string(std::string_view text,
-                         std::vector<std::pair<std::string, std::string>>& pairs,
-                         std::string& error)
+    std::vector<std::pair<std::string, std::string>>& pairs, std::string& error)
 {
     pairs.clear();
     while (!text.empty()) {
@@ -68,4 +67,4 @@ bool split_option_string(std::string_view text,
     return true;
 }
 
-}  // namespace texsyn
+} // namespace texsyn

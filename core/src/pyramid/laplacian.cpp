@@ -48,7 +48,7 @@ Taps expand_taps(int n, Boundary b)
     for (int x = 0; x < n; ++x) {
         float sum = 0.0f;
         for (int k = 0; k < Taps::ntaps; ++k) {
-            const int j    = wrap_coordinate(x + k - 2, n, b);
+            const int j = wrap_coordinate(x + k - 2, n, b);
             const bool hit = j % 2 == 0;
             t.index.push_back(hit ? j / 2 : 0);
             t.weight.push_back(hit ? kernel[k] : 0.0f);
@@ -69,11 +69,11 @@ void resample(const Plane& in, const Taps& tx, const Taps& ty, Plane& out, int n
         [&](int64_t begin, int64_t end) {
             for (int64_t y = begin; y < end; ++y) {
                 const float* src = in.row(int(y));
-                float* dst       = tmp.row(int(y));
+                float* dst = tmp.row(int(y));
                 for (int x = 0; x < w; ++x) {
-                    const int* idx  = &tx.index[size_t(x) * Taps::ntaps];
+                    const int* idx = &tx.index[size_t(x) * Taps::ntaps];
                     const float* wt = &tx.weight[size_t(x) * Taps::ntaps];
-                    float s         = 0.0f;
+                    float s = 0.0f;
                     for (int k = 0; k < Taps::ntaps; ++k)
                         s += wt[k] * src[idx[k]];
                     dst[x] = s / tx.divisor[size_t(x)];
@@ -87,9 +87,9 @@ void resample(const Plane& in, const Taps& tx, const Taps& ty, Plane& out, int n
         int64_t(0), int64_t(h),
         [&](int64_t begin, int64_t end) {
             for (int64_t y = begin; y < end; ++y) {
-                const int* idx  = &ty.index[size_t(y) * Taps::ntaps];
+                const int* idx = &ty.index[size_t(y) * Taps::ntaps];
                 const float* wt = &ty.weight[size_t(y) * Taps::ntaps];
-                float* dst      = out.row(int(y));
+                float* dst = out.row(int(y));
                 std::fill(dst, dst + w, 0.0f);
                 for (int k = 0; k < Taps::ntaps; ++k) {
                     const float* src = tmp.row(idx[k]);
@@ -112,7 +112,7 @@ public:
         int w = width, h = height;
         for (int s = 0; s < scales; ++s) {
             m_levels.push_back({ reduce_taps(w, boundary), reduce_taps(h, boundary),
-                                 expand_taps(w, boundary), expand_taps(h, boundary) });
+                expand_taps(w, boundary), expand_taps(h, boundary) });
             m_names.push_back("L" + std::to_string(s));
             w = (w + 1) / 2;
             h = (h + 1) / 2;
@@ -132,8 +132,8 @@ public:
             for (size_t i = 0; i < g.size(); ++i)
                 g.data()[i] -= up.data()[i];
             bands[s] = std::move(g);
-            g        = std::move(next);
-            next     = Plane();
+            g = std::move(next);
+            next = Plane();
         }
         bands.back() = std::move(g);
     }
@@ -156,16 +156,16 @@ public:
 
 private:
     struct Level {
-        Taps reduce_x, reduce_y;  // this level -> the next (coarser) one
-        Taps expand_x, expand_y;  // the next level -> this one
+        Taps reduce_x, reduce_y; // this level -> the next (coarser) one
+        Taps expand_x, expand_y; // the next level -> this one
     };
     std::vector<Level> m_levels;
 };
 
-}  // namespace
+} // namespace
 
-std::unique_ptr<Pyramid> make_laplacian_pyramid(int width, int height, int scales,
-                                                Boundary boundary)
+std::unique_ptr<Pyramid> make_laplacian_pyramid(
+    int width, int height, int scales, Boundary boundary)
 {
     if (scales < 1 || scales > 30 || width < (1 << scales) || height < (1 << scales))
         return nullptr;
@@ -176,4 +176,4 @@ std::unique_ptr<Pyramid> make_laplacian_pyramid(int width, int height, int scale
     }
 }
 
-}  // namespace texsyn
+} // namespace texsyn

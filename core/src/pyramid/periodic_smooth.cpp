@@ -10,7 +10,7 @@ namespace texsyn {
 
 namespace {
 constexpr double pi = 3.14159265358979323846;
-}  // namespace
+} // namespace
 
 Plane periodic_component(const Plane& image, FftBackend fft, int nthreads)
 {
@@ -47,7 +47,7 @@ Plane periodic_component(const Plane& image, FftBackend fft, int nthreads)
     for (int r = 0; r < N; ++r) {
         for (int q = 0; q < wc; ++q) {
             std::complex<float>& c = spec[size_t(r) * wc + q];
-            const double denom     = cos_x[size_t(q)] + cos_y[size_t(r)] - 4.0;
+            const double denom = cos_x[size_t(q)] + cos_y[size_t(r)] - 4.0;
             // s-hat(0,0) = 0: s has zero mean, so p keeps the image's mean.
             c = (q == 0 && r == 0) ? 0.0f : std::complex<float>(std::complex<double>(c) / denom);
         }
@@ -59,4 +59,4 @@ Plane periodic_component(const Plane& image, FftBackend fft, int nthreads)
     return p;
 }
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -7,8 +7,8 @@
 
 namespace texsyn {
 
-void Pyramid::transform_bands(Plane& image, std::vector<Plane>& bands,
-                              const BandFunction& modify, int nthreads) const
+void Pyramid::transform_bands(
+    Plane& image, std::vector<Plane>& bands, const BandFunction& modify, int nthreads) const
 {
     build(image, bands, nthreads);
     // One task per band: bands differ in size, so equal static chunks would not balance.
@@ -28,10 +28,10 @@ int max_pyramid_scales(int sample_width, int sample_height)
 {
     // floor(log2(min / 8)), clamped at 0: the largest s with min >= 8 * 2^s.
     const int64_t m = std::min(sample_width, sample_height);
-    int s           = 0;
+    int s = 0;
     while (s < 30 && m >= (int64_t(8) << (s + 1)))
         ++s;
     return s;
 }
 
-}  // namespace texsyn
+} // namespace texsyn

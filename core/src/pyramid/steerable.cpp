@@ -18,7 +18,7 @@
 namespace texsyn {
 namespace {
 
-using Cpx           = std::complex<float>;
+using Cpx = std::complex<float>;
 constexpr double pi = 3.14159265358979323846;
 
 // L(r): one-octave raised-cosine transition in log2 r between pi/4 and pi/2.
@@ -73,16 +73,16 @@ public:
     {
         // (-i)^(K-1): makes every oriented band real in space.
         const Cpx phases[4] = { { 1, 0 }, { 0, -1 }, { -1, 0 }, { 0, 1 } };
-        m_phase             = phases[(orientations - 1) % 4];
+        m_phase = phases[(orientations - 1) % 4];
         std::string error;
         int w = width, h = height;
         for (int s = 0; s <= scales; ++s) {
             Level lv;
-            lv.w   = w;
-            lv.h   = h;
+            lv.w = w;
+            lv.h = h;
             lv.fft = RealFft2D::create(w, h, fft, error);
             if (!lv.fft)
-                throw std::bad_alloc();  // the backend was checked by the factory
+                throw std::bad_alloc(); // the backend was checked by the factory
             if (s < scales)
                 make_masks(lv, s);
             m_levels.push_back(std::move(lv));
@@ -112,11 +112,11 @@ public:
             }
         });
         inverse(0, t, bands[0], nthreads);
-        size_t band      = 1;
+        size_t band = 1;
         const int scales = int(m_levels.size()) - 1;
         for (int s = 0; s < scales; ++s) {
             const Level& lv = m_levels[s];
-            const size_t n  = lv.fft->spectrum_size();
+            const size_t n = lv.fft->spectrum_size();
             for (int k = 0; k < m_norient; ++k) {
                 const float* g = lv.oriented[size_t(k)].data();
                 for_ranges(n, nthreads, [&](size_t b, size_t e) {
@@ -140,14 +140,14 @@ public:
     {
         assert(bands.size() == m_names.size());
         const int scales = int(m_levels.size()) - 1;
-        const size_t n0  = m_levels[0].fft->spectrum_size();
+        const size_t n0 = m_levels[0].fft->spectrum_size();
         std::vector<Cpx> y(n0), t(n0), acc(n0);
         forward(scales, bands.back(), y, nthreads);
         const Cpx conj_phase = std::conj(m_phase);
         for (int s = scales - 1; s >= 0; --s) {
             const Level& lv = m_levels[s];
-            const size_t n  = lv.fft->spectrum_size();
-            const Crop& c   = m_crops[size_t(s)];
+            const size_t n = lv.fft->spectrum_size();
+            const Crop& c = m_crops[size_t(s)];
             std::fill_n(acc.begin(), n, Cpx(0.0f));
             for_ranges(c.src.size(), nthreads, [&](size_t b, size_t e) {
                 for (size_t p = b; p < e; ++p)
@@ -174,7 +174,7 @@ public:
     }
 
     void transform_bands(Plane& image, std::vector<Plane>& bands, const BandFunction& modify,
-                         int nthreads) const override
+        int nthreads) const override
     {
         assert(image.width() == m_width && image.height() == m_height);
         const int scales = int(m_levels.size()) - 1;
@@ -200,9 +200,9 @@ public:
         const Cpx conj_phase = std::conj(m_phase);
         std::vector<std::vector<Cpx>> contrib(static_cast<size_t>(nbands));
         auto process = [&](int b) {
-            const int s       = band_level(b, scales);
-            const Level& lv   = m_levels[size_t(s)];
-            const size_t n    = lv.fft->spectrum_size();
+            const int s = band_level(b, scales);
+            const Level& lv = m_levels[size_t(s)];
+            const size_t n = lv.fft->spectrum_size();
             std::vector<Cpx>& t = contrib[size_t(b)];
             t.resize(n);
             if (b == 0) {
@@ -227,8 +227,7 @@ public:
         // One task per band (chunk size 1), largest first, taken by whichever thread is free:
         // bands differ 4x in size per level, so equal static chunks would not balance.
         OIIO::parallel_for_chunked(
-            int64_t(0), int64_t(nbands), int64_t(1),
-            [&](int64_t b, int64_t) { process(int(b)); },
+            int64_t(0), int64_t(nbands), int64_t(1), [&](int64_t b, int64_t) { process(int(b)); },
             OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
 
         // Collapse, adding the contributions in the order collapse() does.
@@ -265,7 +264,7 @@ private:
     struct Level {
         int w = 0, h = 0;
         std::unique_ptr<RealFft2D> fft;
-        std::vector<std::vector<float>> oriented;  // H(r) alpha cos(theta - pi k/K)^(K-1)
+        std::vector<std::vector<float>> oriented; // H(r) alpha cos(theta - pi k/K)^(K-1)
     };
     // Level s -> s+1: spectrum index pairs of the kept window, with L(r) and the DFT
     // normalisation folded in (down = L N_{s+1}/N_s, up = L N_s/N_{s+1}).
@@ -293,16 +292,16 @@ private:
     void frequency(int s, int h, int kx, int row, double& wx, double& wy) const
     {
         const double scale = 2 * pi * std::ldexp(1.0, s);
-        wx                 = scale * kx / m_width;
-        wy                 = scale * signed_index(row, h) / m_height;
+        wx = scale * kx / m_width;
+        wy = scale * signed_index(row, h) / m_height;
     }
 
     void make_masks(Level& lv, int s)
     {
-        const int wc       = lv.w / 2 + 1;
-        const size_t n     = size_t(wc) * size_t(lv.h);
+        const int wc = lv.w / 2 + 1;
+        const size_t n = size_t(wc) * size_t(lv.h);
         const double alpha = orientation_gain(m_norient);
-        const bool odd     = (m_norient - 1) % 2 == 1;
+        const bool odd = (m_norient - 1) % 2 == 1;
         std::vector<double> cos_k(static_cast<size_t>(m_norient)), sin_k(cos_k.size());
         for (int k = 0; k < m_norient; ++k) {
             cos_k[size_t(k)] = std::cos(pi * k / m_norient);
@@ -317,7 +316,7 @@ private:
             for (int kx = 0; kx < wc; ++kx) {
                 double wx, wy;
                 frequency(s, lv.h, kx, row, wx, wy);
-                const double r  = std::hypot(wx, wy);
+                const double r = std::hypot(wx, wy);
                 const double hi = highpass_profile(r);
                 // cos(theta - pi k/K) from the unit vector; theta = atan2(0, 0) = 0 at DC.
                 const double ux = r > 0 ? wx / r : 1.0, uy = r > 0 ? wy / r : 0.0;
@@ -328,7 +327,7 @@ private:
                 const bool self_conj = (kx == 0 || 2 * kx == lv.w) && (row == 0 || 2 * row == lv.h);
                 for (int k = 0; k < m_norient; ++k) {
                     const double c = ux * cos_k[size_t(k)] + uy * sin_k[size_t(k)];
-                    double g       = alpha;
+                    double g = alpha;
                     for (int e = 1; e < m_norient; ++e)
                         g *= c;
                     lv.oriented[size_t(k)][i] = (odd && self_conj) ? 0.0f : float(hi * g);
@@ -368,39 +367,39 @@ private:
 
     int m_norient;
     Cpx m_phase;
-    std::vector<Level> m_levels;      // scales + 1: the last one only for the low-pass
-    std::vector<Crop> m_crops;        // scales
-    std::vector<float> m_hi0, m_lo0;  // the first split, H(r/2) and L(r/2), at level 0
+    std::vector<Level> m_levels;     // scales + 1: the last one only for the low-pass
+    std::vector<Crop> m_crops;       // scales
+    std::vector<float> m_hi0, m_lo0; // the first split, H(r/2) and L(r/2), at level 0
 };
 
-}  // namespace
+} // namespace
 
-std::unique_ptr<Pyramid> make_steerable_pyramid(int width, int height, int scales, int orientations,
-                                                FftBackend fft, std::string& error)
+std::unique_ptr<Pyramid> make_steerable_pyramid(
+    int width, int height, int scales, int orientations, FftBackend fft, std::string& error)
 {
     if (!fft_backend_available(fft)) {
         error = std::string("steerable pyramid: FFT backend '") + fft_backend_name(fft)
-                + "' is not built into this texsyn";
+            + "' is not built into this texsyn";
         return nullptr;
     }
     if (orientations < 1 || orientations > 8) {
         error = "steerable pyramid: orientations=" + std::to_string(orientations)
-                + " is out of range (1 to 8)";
+            + " is out of range (1 to 8)";
         return nullptr;
     }
     if (scales < 1 || scales > 30 || width < (1 << scales) || height < (1 << scales)) {
         error = "steerable pyramid: scales=" + std::to_string(scales) + " does not fit a "
-                + std::to_string(width) + "x" + std::to_string(height)
-                + " image (need scales >= 1 and width, height >= 2^scales)";
+            + std::to_string(width) + "x" + std::to_string(height)
+            + " image (need scales >= 1 and width, height >= 2^scales)";
         return nullptr;
     }
     try {
         return std::make_unique<SteerablePyramid>(width, height, scales, orientations, fft);
     } catch (const std::bad_alloc&) {
         error = "steerable pyramid: out of memory for a " + std::to_string(width) + "x"
-                + std::to_string(height) + " image";
+            + std::to_string(height) + " image";
         return nullptr;
     }
 }
 
-}  // namespace texsyn
+} // namespace texsyn

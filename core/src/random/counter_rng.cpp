@@ -14,7 +14,7 @@ uint64_t mix64(uint64_t x)
     return x ^ (x >> 31);
 }
 
-}  // namespace
+} // namespace
 
 uint64_t random_bits(uint64_t seed, uint64_t stream, uint64_t index)
 {
@@ -27,4 +27,4 @@ float random_uniform(uint64_t seed, uint64_t stream, uint64_t index)
     return float(random_bits(seed, stream, index) >> 40) * (1.0f / 16777216.0f);
 }
 
-}  // namespace texsyn
+} // namespace texsyn

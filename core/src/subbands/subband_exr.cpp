@@ -13,8 +13,8 @@ namespace texsyn {
 namespace {
 
 OIIO::ImageSpec part_spec(int width, int height, const std::vector<std::string>& channels,
-                          int alpha_channel, const std::string& name, int display_w,
-                          int display_h, const OIIO::ImageSpec& metadata)
+    int alpha_channel, const std::string& name, int display_w, int display_h,
+    const OIIO::ImageSpec& metadata)
 {
     OIIO::ImageSpec spec(width, height, int(channels.size()), OIIO::TypeFloat);
     spec.channelnames = channels;
@@ -31,10 +31,10 @@ OIIO::ImageSpec part_spec(int width, int height, const std::vector<std::string>&
     return spec;
 }
 
-}  // namespace
+} // namespace
 
 bool write_subband_exr(const std::string& filename, const OIIO::ImageBuf& synth,
-                       const std::vector<NamedImage>& subbands, std::string& error)
+    const std::vector<NamedImage>& subbands, std::string& error)
 {
     int display_w = synth.spec().width, display_h = synth.spec().height;
     for (const NamedImage& s : subbands) {
@@ -43,16 +43,14 @@ bool write_subband_exr(const std::string& filename, const OIIO::ImageBuf& synth,
     }
     std::vector<OIIO::ImageSpec> specs;
     specs.push_back(part_spec(synth.spec().width, synth.spec().height, synth.spec().channelnames,
-                              synth.spec().alpha_channel, "synth", display_w, display_h,
-                              synth.spec()));
+        synth.spec().alpha_channel, "synth", display_w, display_h, synth.spec()));
     for (const OIIO::ParamValue& p : synth.spec().extra_attribs)
         if (!OIIO::Strutil::starts_with(p.name(), "synth:")
             && !OIIO::Strutil::starts_with(p.name(), "oiio:"))
             specs[0].attribute(p.name(), p.type(), p.data());
     for (const NamedImage& s : subbands)
         specs.push_back(part_spec(s.image.width(), s.image.height(), s.image.channel_names,
-                                  s.image.alpha_channel, s.name, display_w, display_h,
-                                  synth.spec()));
+            s.image.alpha_channel, s.name, display_w, display_h, synth.spec()));
 
     std::string tmp = temporary_path_for(filename);
     auto fail = [&](const std::string& msg) {
@@ -82,4 +80,4 @@ bool write_subband_exr(const std::string& filename, const OIIO::ImageBuf& synth,
     return commit_file(tmp, filename, error);
 }
 
-}  // namespace texsyn
+} // namespace texsyn

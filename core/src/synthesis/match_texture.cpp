@@ -42,7 +42,7 @@ struct ChannelTarget {
 };
 
 ChannelTarget analyse_channel(const Plane& sample, const Pyramid& analysis, PyramidKind kind,
-                              FftBackend fft, int nthreads, std::vector<Plane>& bands)
+    FftBackend fft, int nthreads, std::vector<Plane>& bands)
 {
     ChannelTarget t;
     t.image = QuantileTable(sample);
@@ -68,8 +68,8 @@ Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream)
 }
 
 Plane match_texture(const ChannelTarget& target, const Pyramid& synthesis, int iterations,
-                    HistogramMode mode, uint64_t seed, uint64_t stream, int nthreads,
-                    std::vector<Plane>& bands, const std::function<void(int)>& iteration_done)
+    HistogramMode mode, uint64_t seed, uint64_t stream, int nthreads, std::vector<Plane>& bands,
+    const std::function<void(int)>& iteration_done)
 {
     Plane image = seeded_noise(synthesis.width(), synthesis.height(), seed, stream);
     match_histogram(image, target.image, mode, nthreads);
@@ -99,8 +99,8 @@ float plane_mean(const Plane& p)
     return float(sum / double(p.size()));
 }
 
-std::unique_ptr<Pyramid> make_pyramid(const PyramidOptions& opt, int width, int height,
-                                      int scales, Boundary boundary, std::string& error)
+std::unique_ptr<Pyramid> make_pyramid(const PyramidOptions& opt, int width, int height, int scales,
+    Boundary boundary, std::string& error)
 {
     if (opt.pyramid == PyramidKind::Laplacian)
         return make_laplacian_pyramid(width, height, scales, boundary);
@@ -109,9 +109,8 @@ std::unique_ptr<Pyramid> make_pyramid(const PyramidOptions& opt, int width, int 
 
 // Collects band `b` of every channel into one NamedImage per band.
 void append_subbands(const std::string& prefix, const Pyramid& pyr,
-                     const std::vector<std::vector<Plane>>& per_channel,
-                     const std::vector<std::string>& channel_names,
-                     std::vector<NamedImage>& out)
+    const std::vector<std::vector<Plane>>& per_channel,
+    const std::vector<std::string>& channel_names, std::vector<NamedImage>& out)
 {
     for (int b = 0; b < pyr.nbands(); ++b) {
         NamedImage ni;
@@ -120,13 +119,13 @@ void append_subbands(const std::string& prefix, const Pyramid& pyr,
             ni.image.channels.push_back(per_channel[c][b]);
             ni.image.channel_names.push_back(channel_names[c]);
         }
-        ni.image.alpha_channel = -1;  // "A" is a band here: never multiplied into colour
+        ni.image.alpha_channel = -1; // "A" is a band here: never multiplied into colour
         out.push_back(std::move(ni));
     }
 }
 
 bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PyramidOptions& opt,
-                std::vector<NamedImage>* subbands)
+    std::vector<NamedImage>* subbands)
 {
     std::string error;
     if (!opt.validate(error)) {
@@ -146,28 +145,26 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Pyramid
         return false;
     }
     if (opt.scales > max_scales) {
-        dst.errorfmt("scales={} is too many for a {}x{} sample (at most {})", opt.scales, sw,
-                     sh, max_scales);
+        dst.errorfmt("scales={} is too many for a {}x{} sample (at most {})", opt.scales, sw, sh,
+            max_scales);
         return false;
     }
     const int scales = opt.scales ? opt.scales : max_scales;
     if (std::min(w, h) < (1 << scales)) {
-        dst.errorfmt("size={}x{} is too small for {} scales (each side at least {})", w, h,
-                     scales, 1 << scales);
+        dst.errorfmt("size={}x{} is too small for {} scales (each side at least {})", w, h, scales,
+            1 << scales);
         return false;
     }
     const size_t need = pyramid_memory_estimate(w, h, src.nchannels(), opt);
     const size_t have = physical_memory_bytes();
     if (have && need > have) {
         dst.errorfmt("size={}x{} would need about {} of memory (this machine has {})", w, h,
-                     format_bytes(double(need)), format_bytes(double(have)));
+            format_bytes(double(need)), format_bytes(double(have)));
         return false;
     }
 
-    std::unique_ptr<Pyramid> analysis = make_pyramid(opt, sw, sh, scales, Boundary::Reflect,
-                                                     error);
-    std::unique_ptr<Pyramid> synthesis = make_pyramid(opt, w, h, scales, Boundary::Circular,
-                                                      error);
+    std::unique_ptr<Pyramid> analysis = make_pyramid(opt, sw, sh, scales, Boundary::Reflect, error);
+    std::unique_ptr<Pyramid> synthesis = make_pyramid(opt, w, h, scales, Boundary::Circular, error);
     if (!analysis || !synthesis) {
         dst.errorfmt("{}", error);
         return false;
@@ -186,8 +183,8 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Pyramid
     for (int c = 0; c < src.nchannels(); ++c) {
         const Plane& channel = src.channels[c];
         component_names.push_back(c == src.alpha_channel ? "A" : "pc" + std::to_string(c));
-        ChannelTarget target = analyse_channel(channel, *analysis, opt.pyramid, opt.fft,
-                                               opt.nthreads, sample_bands[c]);
+        ChannelTarget target = analyse_channel(
+            channel, *analysis, opt.pyramid, opt.fft, opt.nthreads, sample_bands[c]);
         if (is_constant(channel) || (c < ct.n && ct.constant[c])) {
             // No variance to synthesize (a constant channel, or a colour direction the
             // sample does not use): keep the channel's mean, and its bands are zero.
@@ -199,20 +196,18 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Pyramid
         auto iteration_done = [&](int it) {
             if (opt.progress)
                 opt.progress(float(c * opt.iterations + it)
-                             / float(std::max(1, src.nchannels() * opt.iterations)));
+                    / float(std::max(1, src.nchannels() * opt.iterations)));
         };
+        std::vector<Plane> work_bands; // freed after each channel: only one set is alive
         out.channels.push_back(match_texture(target, *synthesis, opt.iterations, opt.histogram,
-                                             opt.seed, uint64_t(c), opt.nthreads,
-                                             synth_bands[c], iteration_done));
+            opt.seed, uint64_t(c), opt.nthreads, work_bands, iteration_done));
         if (subbands)
             synthesis->build(out.channels.back(), synth_bands[c], opt.nthreads);
     }
     if (subbands) {
         subbands->clear();
-        append_subbands("sample", *analysis, sample_bands, component_names,
-                        *subbands);
-        append_subbands("synth", *synthesis, synth_bands, component_names,
-                        *subbands);
+        append_subbands("sample", *analysis, sample_bands, component_names, *subbands);
+        append_subbands("synth", *synthesis, synth_bands, component_names, *subbands);
     }
     sample_bands.clear();
     synth_bands.clear();
@@ -221,8 +216,8 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Pyramid
     // sample's (in scene-linear), which recorrelation alone does not guarantee.
     recorrelate(out, ct, opt.nthreads);
     for (int c = 0; c < out.nchannels(); ++c)
-        match_histogram(out.channels[c], QuantileTable(original.channels[c]), opt.histogram,
-                        opt.nthreads);
+        match_histogram(
+            out.channels[c], QuantileTable(original.channels[c]), opt.histogram, opt.nthreads);
 
     imagebuf_from_planes(out, dst);
     PyramidOptions resolved = opt;
@@ -237,10 +232,10 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Pyramid
     return true;
 }
 
-}  // namespace
+} // namespace
 
 bool pyramid_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample,
-                        const PyramidOptions& opt, std::vector<NamedImage>* subbands)
+    const PyramidOptions& opt, std::vector<NamedImage>* subbands)
 {
     try {
         return synthesize(dst, sample, opt, subbands);
@@ -252,8 +247,8 @@ bool pyramid_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample,
     return false;
 }
 
-OIIO::ImageBuf pyramid_synthesize(const OIIO::ImageBuf& sample, const PyramidOptions& opt,
-                                  std::vector<NamedImage>* subbands)
+OIIO::ImageBuf pyramid_synthesize(
+    const OIIO::ImageBuf& sample, const PyramidOptions& opt, std::vector<NamedImage>* subbands)
 {
     OIIO::ImageBuf result;
     if (!pyramid_synthesize(result, sample, opt, subbands) && !result.has_error())
@@ -261,4 +256,4 @@ OIIO::ImageBuf pyramid_synthesize(const OIIO::ImageBuf& sample, const PyramidOpt
     return result;
 }
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -9,21 +9,21 @@ const OptionTable<PyramidOptions>& PyramidOptions::table()
     static const OptionTable<O> t = [] {
         OptionTable<O> t;
         t.size("size", &O::width, &O::height, 1 << 20, "the sample's size",
-               "output size WxH (default: the sample's size)");
+            "output size WxH (default: the sample's size)");
         t.integer("iterations", &O::iterations, 0, 100,
-                  "match-texture iterations (Heeger & Bergen §3.3: about 5)");
+            "match-texture iterations (Heeger & Bergen §3.3: about 5)");
         t.choice("pyramid", &O::pyramid,
-                 { { "steerable", PyramidKind::Steerable }, { "laplacian", PyramidKind::Laplacian } },
-                 "subband decomposition: steerable (oriented bands) or laplacian");
+            { { "steerable", PyramidKind::Steerable }, { "laplacian", PyramidKind::Laplacian } },
+            "subband decomposition: steerable (oriented bands) or laplacian");
         t.integer("scales", &O::scales, 0, 16,
-                  "pyramid scales; 0 = the most the sample allows (coarsest band >= 8 px)");
+            "pyramid scales; 0 = the most the sample allows (coarsest band >= 8 px)");
         t.integer("orientations", &O::orientations, 1, 8,
-                  "oriented bands per scale of the steerable pyramid");
+            "oriented bands per scale of the steerable pyramid");
         t.choice("histogram", &O::histogram,
-                 { { "exact", HistogramMode::Exact }, { "bins256", HistogramMode::Bins256 } },
-                 "histogram matching: exact quantiles, or the paper's 256-bin cdf");
+            { { "exact", HistogramMode::Exact }, { "bins256", HistogramMode::Bins256 } },
+            "histogram matching: exact quantiles, or the paper's 256-bin cdf");
         t.choice("fft", &O::fft, { { "kiss", FftBackend::Kiss }, { "fftw", FftBackend::Fftw } },
-                 "FFT backend: kiss (built in) or fftw (only in -DTEXSYN_WITH_FFTW=ON builds)");
+            "FFT backend: kiss (built in) or fftw (only in -DTEXSYN_WITH_FFTW=ON builds)");
         return t;
     }();
     return t;
@@ -33,7 +33,7 @@ bool PyramidOptions::validate(std::string& error) const
 {
     if ((width == 0) != (height == 0) || width < 0 || height < 0) {
         error = "size=" + std::to_string(width) + "x" + std::to_string(height)
-                + " is not a size (both sides must be >= 1)";
+            + " is not a size (both sides must be >= 1)";
         return false;
     }
     if (iterations < 0 || iterations > 100) {
@@ -50,7 +50,7 @@ bool PyramidOptions::validate(std::string& error) const
     }
     if (!fft_backend_available(fft)) {
         error = std::string("fft=") + fft_backend_name(fft)
-                + " is not available: texsyn was built without it (-DTEXSYN_WITH_FFTW=ON)";
+            + " is not available: texsyn was built without it (-DTEXSYN_WITH_FFTW=ON)";
         return false;
     }
     return true;
@@ -64,10 +64,10 @@ size_t pyramid_memory_estimate(int width, int height, int nchannels, const Pyram
     // residuals), one half spectrum per band (4 per band pixel) and the per-level low-pass
     // spectra (about 6).
     double n = double(width) * double(height);
-    double bands = opt.pyramid == PyramidKind::Steerable ? opt.orientations * 4.0 / 3.0 + 2.0
-                                                         : 4.0 / 3.0;
+    double bands
+        = opt.pyramid == PyramidKind::Steerable ? opt.orientations * 4.0 / 3.0 + 2.0 : 4.0 / 3.0;
     double bytes = n * (12.0 * nchannels + 4.0 + 8.0 * bands + 6.0);
     return bytes > 1e18 ? size_t(1e18) : size_t(bytes);
 }
 
-}  // namespace texsyn
+} // namespace texsyn

@@ -8,4 +8,4 @@ const char* version()
     return TEXSYN_VERSION_STRING;
 }
 
-}  // namespace texsyn
+} // namespace texsyn
