@@ -10,10 +10,12 @@
 namespace texsyn {
 
 QuantileTable::QuantileTable(const float* values, size_t n)
-    : m_sorted(values, values + n)
+    : m_sorted(n)
 {
-    // Done once per band at analysis time, so std::sort is fast enough.
-    std::sort(m_sorted.begin(), m_sorted.end());
+    // The O(n) radix ranking of match_histogram: analysis sorts every band of the sample.
+    const uint64_t* order = histogram_pvt::rank_by_value(values, n, 1);
+    for (size_t i = 0; i < n; ++i)
+        m_sorted[i] = values[order ? size_t(uint32_t(order[i])) : i];
 }
 
 QuantileTable QuantileTable::from_sorted(std::vector<float> sorted)

@@ -312,7 +312,10 @@ private:
             m_hi0.resize(n);
             m_lo0.resize(n);
         }
-        for (int row = 0; row < lv.h; ++row) {
+        // Rows are independent; plans are made once per synthesis but hold ~(K+2) masks
+        // of the output's size, so they are worth making in parallel.
+        OIIO::parallel_for(0, lv.h, [&](int64_t row64) {
+            const int row = int(row64);
             for (int kx = 0; kx < wc; ++kx) {
                 double wx, wy;
                 frequency(s, lv.h, kx, row, wx, wy);
@@ -337,7 +340,7 @@ private:
                     m_lo0[i] = float(lowpass_profile(r / 2));
                 }
             }
-        }
+        });
     }
 
     void make_crop(int s)

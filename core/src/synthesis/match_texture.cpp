@@ -8,6 +8,8 @@
 
 #include <unistd.h>
 
+#include <OpenImageIO/parallel.h>
+
 #include <texsyn/color.h>
 #include <texsyn/random.h>
 
@@ -53,8 +55,11 @@ ChannelTarget analyse_channel(const Plane& sample, const Pyramid& analysis, Pyra
         analysis.build(periodic_component(sample, fft, nthreads), bands, nthreads);
     else
         analysis.build(sample, bands, nthreads);
-    for (const Plane& b : bands)
-        t.bands.emplace_back(b);
+    t.bands.resize(bands.size());
+    OIIO::parallel_for_chunked(
+        int64_t(0), int64_t(bands.size()), int64_t(1),
+        [&](int64_t b, int64_t) { t.bands[size_t(b)] = QuantileTable(bands[size_t(b)]); },
+        OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
     return t;
 }
 
