@@ -11,6 +11,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
 #include <new>
 
 #include <OpenImageIO/parallel.h>
@@ -181,9 +182,14 @@ public:
         const int nbands = int(m_names.size());
         bands.resize(size_t(nbands));
 
+        WorkspaceLease lease(*this);
+        Workspace& ws = lease.get();
+
         // The low-pass spectrum of every level (cheap: one transform, then crops).
-        std::vector<std::vector<Cpx>> lows(size_t(scales) + 1);
-        std::vector<Cpx> x(m_levels[0].fft->spectrum_size());
+        std::vector<std::vector<Cpx>>& lows = ws.lows;
+        lows.resize(size_t(scales) + 1);
+        std::vector<Cpx>& x = ws.x;
+        x.resize(m_levels[0].fft->spectrum_size());
         m_levels[0].fft->forward(image.data(), x.data(), nthreads);
         lows[0].resize(x.size());
         for (size_t i = 0; i < x.size(); ++i)
@@ -198,7 +204,8 @@ public:
         // Per band, on one thread: mask, inverse transform, modify, forward transform, adjoint
         // mask. Each band's contribution is kept apart so the sum below has a fixed order.
         const Cpx conj_phase = std::conj(m_phase);
-        std::vector<std::vector<Cpx>> contrib(static_cast<size_t>(nbands));
+        std::vector<std::vector<Cpx>>& contrib = ws.contrib;
+        contrib.resize(size_t(nbands));
         auto process = [&](int b) {
             const int s = band_level(b, scales);
             const Level& lv = m_levels[size_t(s)];
@@ -231,7 +238,9 @@ public:
             OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
 
         // Collapse, adding the contributions in the order collapse() does.
-        std::vector<Cpx> y = std::move(contrib[size_t(nbands) - 1]), acc;
+        std::vector<Cpx>& y = ws.y;
+        std::vector<Cpx>& acc = ws.acc;
+        y.swap(contrib[size_t(nbands) - 1]);
         for (int s = scales - 1; s >= 0; --s) {
             const Crop& c = m_crops[size_t(s)];
             acc.assign(m_levels[size_t(s)].fft->spectrum_size(), Cpx(0.0f));
@@ -251,6 +260,40 @@ public:
     }
 
 private:
+    // Spectra that transform_bands needs per call (tens of MB at 1024^2). Reusing them
+    // avoids page-faulting fresh memory on every iteration; concurrent calls each lease
+    // their own.
+    struct Workspace {
+        std::vector<std::vector<Cpx>> lows, contrib;
+        std::vector<Cpx> x, y, acc;
+    };
+    class WorkspaceLease {
+    public:
+        explicit WorkspaceLease(const SteerablePyramid& pyr)
+            : m_pyr(pyr)
+        {
+            std::lock_guard<std::mutex> lock(pyr.m_workspace_mutex);
+            if (pyr.m_workspaces.empty()) {
+                m_ws = std::make_unique<Workspace>();
+            } else {
+                m_ws = std::move(pyr.m_workspaces.back());
+                pyr.m_workspaces.pop_back();
+            }
+        }
+        ~WorkspaceLease()
+        {
+            std::lock_guard<std::mutex> lock(m_pyr.m_workspace_mutex);
+            m_pyr.m_workspaces.push_back(std::move(m_ws));
+        }
+        WorkspaceLease(const WorkspaceLease&) = delete;
+        WorkspaceLease& operator=(const WorkspaceLease&) = delete;
+        Workspace& get() { return *m_ws; }
+
+    private:
+        const SteerablePyramid& m_pyr;
+        std::unique_ptr<Workspace> m_ws;
+    };
+
     // The pyramid level whose size band b has.
     int band_level(int b, int scales) const
     {
@@ -373,6 +416,8 @@ private:
     std::vector<Level> m_levels;     // scales + 1: the last one only for the low-pass
     std::vector<Crop> m_crops;       // scales
     std::vector<float> m_hi0, m_lo0; // the first split, H(r/2) and L(r/2), at level 0
+    mutable std::mutex m_workspace_mutex;
+    mutable std::vector<std::unique_ptr<Workspace>> m_workspaces;
 };
 
 } // namespace
