@@ -121,35 +121,25 @@ public:
 
     void forward(const float* in, Cpx* out, int nthreads) const override
     {
-        const int64_t w = m_width, h = m_height, wc = w / 2 + 1;
-        OIIO::parallel_for_range(
-            int64_t(0), (h + 1) / 2,
-            [&](int64_t begin, int64_t end) {
-                Cpx* z = task_scratch(2 * size_t(w));
-                Cpx* zf = z + w;
-                for (int64_t p = begin; p < end; ++p) {
-                    const int64_t y0 = 2 * p;
-                    const bool pair = y0 + 1 < h;
-                    const float* a = in + y0 * w;
-                    const float* b = a + w;
-                    for (int64_t x = 0; x < w; ++x)
-                        z[x] = Cpx(a[x], pair ? b[x] : 0.0f);
-                    m_row_fwd.run(z, zf);
-                    // Split Z = A + iB using A(k) = (Z(k) + conj Z(-k))/2, B(k) = (Z(k) - conj
-                    // Z(-k))/2i.
-                    Cpx* oa = out + y0 * wc;
-                    Cpx* ob = oa + wc;
-                    for (int64_t k = 0; k < wc; ++k) {
-                        const Cpx zk = zf[k];
-                        const Cpx zc = std::conj(zf[k == 0 ? 0 : w - k]);
-                        oa[k] = 0.5f * (zk + zc);
-                        if (pair)
-                            ob[k] = Cpx(
-                                0.5f * (zk.imag() - zc.imag()), -0.5f * (zk.real() - zc.real()));
-                    }
-                }
-            },
-            fft_paropt(nthreads));
+        const int64_t w = m_width, wc = w / 2 + 1;
+        for_row_pairs(nthreads, [&](int64_t y0, bool pair, Cpx* z, Cpx* zf) {
+            const float* a = in + y0 * w;
+            const float* b = a + w;
+            for (int64_t x = 0; x < w; ++x)
+                z[x] = Cpx(a[x], pair ? b[x] : 0.0f);
+            m_row_fwd.run(z, zf);
+            // Split Z = A + iB using A(k) = (Z(k) + conj Z(-k))/2, B(k) = (Z(k) - conj
+            // Z(-k))/2i.
+            Cpx* oa = out + y0 * wc;
+            Cpx* ob = oa + wc;
+            for (int64_t k = 0; k < wc; ++k) {
+                const Cpx zk = zf[k];
+                const Cpx zc = std::conj(zf[k == 0 ? 0 : w - k]);
+                oa[k] = 0.5f * (zk + zc);
+                if (pair)
+                    ob[k] = Cpx(0.5f * (zk.imag() - zc.imag()), -0.5f * (zk.real() - zc.real()));
+            }
+        });
         columns(out, out, m_col_fwd, nthreads);
     }
 
@@ -160,44 +150,52 @@ public:
         Cpx* spec = work.data();
         columns(in, spec, m_col_inv, nthreads);
         const float scale = float(1.0 / (double(w) * double(h)));
+        for_row_pairs(nthreads, [&](int64_t y0, bool pair, Cpx* z, Cpx* zf) {
+            const Cpx* a = spec + y0 * wc;
+            const Cpx* b = a + wc;
+            // Z = A + iB over the full row from the Hermitian halves; the imaginary
+            // parts of the self-conjugate bins (DC, even-width Nyquist) are dropped,
+            // as a c2r transform does.
+            z[0] = Cpx(a[0].real(), pair ? b[0].real() : 0.0f);
+            for (int64_t k = 1; k < wc; ++k) {
+                const Cpx ak = a[k];
+                const Cpx bk = pair ? b[k] : Cpx(0.0f);
+                if (2 * k == w) {
+                    z[k] = Cpx(ak.real(), bk.real());
+                    continue;
+                }
+                z[k] = Cpx(ak.real() - bk.imag(), ak.imag() + bk.real());
+                z[w - k] = Cpx(ak.real() + bk.imag(), bk.real() - ak.imag());
+            }
+            m_row_inv.run(z, zf);
+            float* oa = out + y0 * w;
+            float* ob = oa + w;
+            for (int64_t x = 0; x < w; ++x)
+                oa[x] = zf[x].real() * scale;
+            if (pair)
+                for (int64_t x = 0; x < w; ++x)
+                    ob[x] = zf[x].imag() * scale;
+        });
+    }
+
+private:
+    // Calls f(y0, pair, z, zf) for rows y0 = 0, 2, 4, …, in parallel: rows y0 and y0 + 1 (if
+    // pair) share one complex FFT of length width; z and zf are per-task scratch of that
+    // length.
+    template <class F>
+    void for_row_pairs(int nthreads, F&& f) const
+    {
+        const int64_t w = m_width, h = m_height;
         OIIO::parallel_for_range(
             int64_t(0), (h + 1) / 2,
             [&](int64_t begin, int64_t end) {
                 Cpx* z = task_scratch(2 * size_t(w));
-                Cpx* zf = z + w;
-                for (int64_t p = begin; p < end; ++p) {
-                    const int64_t y0 = 2 * p;
-                    const bool pair = y0 + 1 < h;
-                    const Cpx* a = spec + y0 * wc;
-                    const Cpx* b = a + wc;
-                    // Z = A + iB over the full row from the Hermitian halves; the imaginary
-                    // parts of the self-conjugate bins (DC, even-width Nyquist) are dropped,
-                    // as a c2r transform does.
-                    z[0] = Cpx(a[0].real(), pair ? b[0].real() : 0.0f);
-                    for (int64_t k = 1; k < wc; ++k) {
-                        const Cpx ak = a[k];
-                        const Cpx bk = pair ? b[k] : Cpx(0.0f);
-                        if (2 * k == w) {
-                            z[k] = Cpx(ak.real(), bk.real());
-                            continue;
-                        }
-                        z[k] = Cpx(ak.real() - bk.imag(), ak.imag() + bk.real());
-                        z[w - k] = Cpx(ak.real() + bk.imag(), bk.real() - ak.imag());
-                    }
-                    m_row_inv.run(z, zf);
-                    float* oa = out + y0 * w;
-                    float* ob = oa + w;
-                    for (int64_t x = 0; x < w; ++x)
-                        oa[x] = zf[x].real() * scale;
-                    if (pair)
-                        for (int64_t x = 0; x < w; ++x)
-                            ob[x] = zf[x].imag() * scale;
-                }
+                for (int64_t p = begin; p < end; ++p)
+                    f(2 * p, 2 * p + 1 < h, z, z + w);
             },
             fft_paropt(nthreads));
     }
 
-private:
     // Complex FFT of every column of a half spectrum; src may equal dst (each block reads
     // all of its columns before writing them).
     void columns(const Cpx* src, Cpx* dst, const KissCfg& cfg, int nthreads) const

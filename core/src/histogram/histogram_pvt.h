@@ -30,5 +30,11 @@ inline float quantile_of_sorted(const float* s, size_t m, double u)
 /// until the calling thread's next call. Requires n < 2^32.
 const uint64_t* rank_by_value(const float* values, size_t n, int nthreads);
 
+/// Exact histogram matching in place: values[j] = Q((rank_j + 0.5)/n) with Q the quantile
+/// function of sorted[0..m-1] and rank_j the (value, index) rank of j. The quantile
+/// write-back is fused with the last radix pass (one scatter fewer than ranking first).
+/// Requires n < 2^32, m >= 1.
+void assign_quantiles_by_rank(float* values, size_t n, const float* sorted, size_t m, int nthreads);
+
 } // namespace histogram_pvt
 } // namespace texsyn

@@ -35,21 +35,8 @@ OIIO::paropt chunk_opt(int nthreads)
 
 void match_exact(Plane& plane, const QuantileTable& target, int nthreads)
 {
-    const size_t n = plane.size();
-    const float* s = target.sorted().data();
-    const size_t m = target.sorted().size();
-    float* out = plane.data();
-    const uint64_t* order = histogram_pvt::rank_by_value(out, n, nthreads);
-    const double dn = double(n);
-    OIIO::parallel_for_chunked(
-        0, int64_t(n), kChunk,
-        [&](int64_t begin, int64_t end) {
-            for (int64_t i = begin; i < end; ++i) {
-                const size_t idx = order ? size_t(uint32_t(order[i])) : size_t(i);
-                out[idx] = histogram_pvt::quantile_of_sorted(s, m, (double(i) + 0.5) / dn);
-            }
-        },
-        chunk_opt(nthreads));
+    histogram_pvt::assign_quantiles_by_rank(
+        plane.data(), plane.size(), target.sorted().data(), target.sorted().size(), nthreads);
 }
 
 constexpr int kBins = 256;

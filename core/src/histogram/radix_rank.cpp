@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include <OpenImageIO/parallel.h>
@@ -71,7 +72,17 @@ void count_digits(const float* values, size_t n, Histograms& total, Scratch& s, 
 
 } // namespace
 
-const uint64_t* rank_by_value(const float* values, size_t n, int nthreads)
+namespace {
+
+// LSD radix passes over (key, index) entries; passes whose digit is the same for every key
+// are skipped (a stable pass would not move anything). The last moving pass calls
+// last(position, entry) for every entry instead of scattering it, when `Last` is not
+// std::nullptr_t. Returns the sorted entries, nullptr if no pass moved anything (all keys
+// equal: the order is the identity), or the end marker `fused` if `last` consumed them.
+const uint64_t fused_marker = 0;
+
+template <class Last>
+const uint64_t* radix_passes(const float* values, size_t n, int nthreads, Last last)
 {
     Scratch& s = tl_scratch;
     Histograms hist;
@@ -80,13 +91,21 @@ const uint64_t* rank_by_value(const float* values, size_t n, int nthreads)
     s.b.resize(n);
 
     const uint32_t first_key = monotone_key(values[0]);
+    int moving[kPasses], nmoving = 0;
+    for (int p = 0; p < kPasses; ++p)
+        if (hist[size_t(p) * kBuckets + digit(first_key, p)] != n)
+            moving[nmoving++] = p;
+    // A fused last pass must not be the first: that one reads its keys from `values`,
+    // which `last` may be rewriting.
+    constexpr bool has_last = !std::is_same_v<Last, std::nullptr_t>;
+    const bool fuse = has_last && nmoving > 1;
+
     const uint64_t* src = nullptr; // nullptr: read keys from `values` in index order
     uint64_t* dst = s.a.data();
     std::array<size_t, kBuckets> offset;
-    for (int p = 0; p < kPasses; ++p) {
+    for (int m = 0; m < nmoving; ++m) {
+        const int p = moving[m];
         const uint32_t* h = hist.data() + p * kBuckets;
-        if (h[digit(first_key, p)] == n)
-            continue; // every key has this digit: a stable pass would not move anything
         size_t sum = 0;
         for (uint32_t d = 0; d < kBuckets; ++d) {
             offset[d] = sum;
@@ -98,6 +117,13 @@ const uint64_t* rank_by_value(const float* values, size_t n, int nthreads)
                 const uint32_t key = monotone_key(values[i]);
                 dst[offset[digit(key, p)]++] = (uint64_t(key) << 32) | uint64_t(i);
             }
+        } else if (fuse && m == nmoving - 1) {
+            if constexpr (has_last)
+                for (size_t i = 0; i < n; ++i) {
+                    const uint64_t e = src[i];
+                    last(offset[digit(uint32_t(e >> 32), p)]++, e);
+                }
+            return &fused_marker;
         } else {
             for (size_t i = 0; i < n; ++i) {
                 const uint64_t e = src[i];
@@ -108,6 +134,27 @@ const uint64_t* rank_by_value(const float* values, size_t n, int nthreads)
         dst = (dst == s.a.data()) ? s.b.data() : s.a.data();
     }
     return src;
+}
+
+} // namespace
+
+const uint64_t* rank_by_value(const float* values, size_t n, int nthreads)
+{
+    return radix_passes(values, n, nthreads, nullptr);
+}
+
+void assign_quantiles_by_rank(float* values, size_t n, const float* sorted, size_t m, int nthreads)
+{
+    const double dn = double(n);
+    auto assign = [&](size_t rank, uint64_t entry) {
+        values[uint32_t(entry)] = quantile_of_sorted(sorted, m, (double(rank) + 0.5) / dn);
+    };
+    const uint64_t* order = radix_passes(values, n, nthreads, assign);
+    if (order == &fused_marker)
+        return;
+    // Not fused (fewer than two moving passes): assign from the sorted order.
+    for (size_t i = 0; i < n; ++i)
+        assign(i, order ? order[i] : uint64_t(i));
 }
 
 } // namespace histogram_pvt
