@@ -22,11 +22,12 @@ struct CliError : std::runtime_error {
 /// One image on the stack. Pixels are float and scene-linear.
 struct StackImage {
     OIIO::ImageBuf buf;
-    OIIO::ImageBuf file_pixels;       ///< an input's pixels as read (for --iscolorspace)
-    std::string source;               ///< the sample file it came from
-    std::string input_colorspace;     ///< the space the sample file was in
-    std::string output_colorspace;    ///< set by --tocolorspace; "" = default policy
-    std::vector<NamedImage> subbands; ///< filled when --subbands is on
+    OIIO::ImageBuf file_pixels; ///< an input's pixels as read (for --iscolorspace)
+    OIIO::TypeDesc input_format = OIIO::TypeUInt8; ///< the sample file's pixel type
+    std::string source;                            ///< the sample file it came from
+    std::string input_colorspace;                  ///< the space the sample file was in
+    std::string output_colorspace;                 ///< set by --tocolorspace; "" = default policy
+    std::vector<NamedImage> subbands;              ///< filled when --subbands is on
 };
 
 struct CliState {
@@ -39,10 +40,16 @@ struct CliState {
     std::string colorconfig_path;
     std::string pending_iscolorspace; ///< --iscolorspace seen before any input
     std::string pending_tocolorspace; ///< --tocolorspace seen before any image
-    std::string data_format;          ///< -d: output pixel type, "" = per format default
+    OIIO::TypeDesc data_format;       ///< -d: output pixel type; unknown = the default
     std::string command_line;
 
     std::vector<StackImage> stack;
+    /// Outputs written so far, as (temporary file, final name): renamed into place by
+    /// commit_outputs() when the whole run succeeded, removed by discard_outputs() if not,
+    /// so a failed run leaves no output behind.
+    std::vector<std::pair<std::string, std::string>> pending_outputs;
+    void commit_outputs();
+    void discard_outputs();
 
     /// The colour config, loaded on first use (so --colorconfig anywhere before the first
     /// input counts).
@@ -63,10 +70,14 @@ void push_input(CliState& state, const std::string& filename);
 /// Declares the colour space of the input on top of the stack and re-linearises it.
 void reinterpret_input(CliState& state, const std::string& colorspace);
 
-/// Writes the top image to `filename` (colour space and pixel type per the policy in
-/// docs/colour.md), atomically, with synth:* metadata; with --subbands writes the
-/// multi-part inspection EXR.
+/// Writes the top image for `filename` (colour space and pixel type per the policy in
+/// docs/colour.md), with synth:* metadata, to a temporary file in pending_outputs; with
+/// --subbands writes the multi-part inspection EXR.
 void write_output(CliState& state, const std::string& filename);
+
+/// Parses --pyramid's modifiers (each option at most once); throws CliError naming the
+/// command on a bad or repeated one.
+PyramidOptions parse_pyramid_options(const std::string& command, const std::string& modifiers);
 
 /// --pyramid[:name=value…]: pops a sample, pushes the synthesis.
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers);

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// Reading samples into scene-linear float and writing results in the policy's colour space.
+// Reading samples into scene-linear float and writing results in the policy's colour space
+// (docs/colour.md), to temporary files that are committed only when the whole run succeeds.
 #include "cli_state.h"
+#include "output_format.h"
+#include "quiet_stderr.h"
 
-#include <cstdio>
-
-#include <fcntl.h>
-#include <unistd.h>
+#include <filesystem>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/strutil.h>
@@ -14,69 +14,6 @@
 #include <texsyn/subbands.h>
 
 namespace texsyn::cli {
-
-namespace {
-
-bool is_float_format(const std::string& filename)
-{
-    std::string ext = OIIO::Strutil::lower(OIIO::Filesystem::extension(filename, false));
-    return ext == "exr" || ext == "sxr" || ext == "mxr" || ext == "hdr" || ext == "rgbe"
-        || ext == "pfm";
-}
-
-OIIO::TypeDesc output_type(const CliState& state, const std::string& filename)
-{
-    if (!state.data_format.empty())
-        return OIIO::TypeDesc(state.data_format);
-    return is_float_format(filename) ? OIIO::TypeHalf : OIIO::TypeUInt8;
-}
-
-void convert_buf(CliState& state, OIIO::ImageBuf& buf, const std::string& from,
-    const std::string& to, const std::string& what)
-{
-    PlanarImage planes;
-    std::string error;
-    if (!planes_from_imagebuf(buf, planes, error))
-        throw CliError(what + ": " + error);
-    if (!state.colors().convert(planes, from, to, error, state.threads))
-        throw CliError(what + ": " + error);
-    OIIO::ImageSpec original = buf.spec();
-    imagebuf_from_planes(planes, buf);
-    for (const OIIO::ParamValue& p : original.extra_attribs)
-        buf.specmod().attribute(p.name(), p.type(), p.data());
-}
-
-// Image libraries (libpng, libtiff) print their own diagnostics on stderr before OIIO
-// reports the error; the tool states each error once, on one line, so silence them while
-// a file is read.
-class QuietStderr {
-public:
-    QuietStderr()
-    {
-        std::fflush(stderr);
-        m_saved = ::dup(STDERR_FILENO);
-        int devnull = ::open("/dev/null", O_WRONLY);
-        if (m_saved >= 0 && devnull >= 0)
-            ::dup2(devnull, STDERR_FILENO);
-        if (devnull >= 0)
-            ::close(devnull);
-    }
-    ~QuietStderr()
-    {
-        std::fflush(stderr);
-        if (m_saved >= 0) {
-            ::dup2(m_saved, STDERR_FILENO);
-            ::close(m_saved);
-        }
-    }
-    QuietStderr(const QuietStderr&) = delete;
-    QuietStderr& operator=(const QuietStderr&) = delete;
-
-private:
-    int m_saved = -1;
-};
-
-} // namespace
 
 void push_input(CliState& state, const std::string& filename)
 {
@@ -90,10 +27,11 @@ void push_input(CliState& state, const std::string& filename)
     if (!ok)
         throw CliError(error);
     img.source = filename;
+    img.input_format = img.file_pixels.nativespec().format;
     img.output_colorspace = state.pending_tocolorspace;
     state.stack.push_back(std::move(img));
     std::string space = state.pending_iscolorspace.empty()
-        ? state.colors().guess_colorspace(state.stack.back().file_pixels.spec())
+        ? state.colors().guess_colorspace(state.stack.back().file_pixels.nativespec())
         : state.pending_iscolorspace;
     state.pending_iscolorspace.clear();
     reinterpret_input(state, space);
@@ -115,7 +53,8 @@ void reinterpret_input(CliState& state, const std::string& colorspace)
         throw CliError(img.source + ": " + error);
     if (!cc.convert(planes, space, cc.scene_linear(), error, state.threads))
         throw CliError(img.source + ": " + error);
-    imagebuf_from_planes(planes, img.buf);
+    // Kept un-associated: colour under zero alpha must survive to the output.
+    imagebuf_from_planes(planes, img.buf, false);
     img.input_colorspace = space;
 }
 
@@ -123,39 +62,66 @@ void write_output(CliState& state, const std::string& filename)
 {
     StackImage& img = state.top("-o");
     const ColorConfig& cc = state.colors();
-    OIIO::TypeDesc type = output_type(state, filename);
-    if (type == OIIO::TypeUnknown)
-        throw CliError("-d : unknown data format '" + state.data_format
-            + "' (use uint8, uint16, half or float)");
+    const OIIO::TypeDesc type = output_pixel_type(filename, state.data_format, img.input_format);
     std::string space = img.output_colorspace;
     if (space.empty())
-        space = type.is_floating_point() ? cc.scene_linear() : img.input_colorspace;
+        space = is_linear_type(type) ? cc.scene_linear() : img.input_colorspace;
     if (cc.resolve(space).empty())
         throw CliError("--tocolorspace : unknown colour space '" + space + "'");
     space = cc.resolve(space);
 
+    PlanarImage planes;
+    std::string error;
+    if (!planes_from_imagebuf(img.buf, planes, error)
+        || !cc.convert(planes, cc.scene_linear(), space, error, state.threads))
+        throw CliError("-o " + filename + " : " + error);
     OIIO::ImageBuf out;
-    out.copy(img.buf);
-    convert_buf(state, out, cc.scene_linear(), space, filename);
+    imagebuf_from_planes(planes, out, stores_associated_alpha(filename));
     OIIO::ImageSpec& spec = out.specmod();
+    for (const OIIO::ParamValue& p : img.buf.spec().extra_attribs)
+        if (OIIO::Strutil::starts_with(p.name(), "synth:"))
+            spec.attribute(p.name(), p.type(), p.data());
     spec.attribute("synth:sample", OIIO::Filesystem::filename(img.source));
     spec.attribute("synth:colorspace", space);
     spec.attribute("synth:commandline", state.command_line);
     spec.attribute("oiio:ColorSpace", space);
-    // Reproducible files: OIIO would otherwise stamp the current time.
-    spec.attribute("DateTime", "2000:01:01 00:00:00");
+    // Formats that drop unknown attributes (TIFF, JPEG) still keep the description.
+    spec.attribute("ImageDescription",
+        "texsyn " + std::string(version()) + " --"
+            + std::string(spec.get_string_attribute("synth:method")) + ":"
+            + std::string(spec.get_string_attribute("synth:options")) + " seed "
+            + std::to_string(spec.get_int_attribute("synth:seed")) + ", sample "
+            + OIIO::Filesystem::filename(img.source) + ", " + space);
 
-    std::string error;
-    if (state.subbands) {
-        if (img.subbands.empty())
-            throw CliError(
-                "-o " + filename + " : --subbands needs a synthesis on the stack (e.g. --pyramid)");
-        if (!write_subband_exr(filename, out, img.subbands, error))
-            throw CliError(error);
-        return;
+    // Written to a temporary file now, renamed into place when the whole run succeeded.
+    const std::string tmp = temporary_path_for(filename);
+    state.pending_outputs.emplace_back(tmp, filename);
+    bool ok;
+    {
+        QuietStderr quiet;
+        ok = state.subbands ? write_subband_exr(tmp, out, img.subbands, error)
+                            : write_image_atomic(out, tmp, type, error);
     }
-    if (!write_image_atomic(out, filename, type, error))
-        throw CliError(error);
+    if (!ok)
+        throw CliError("-o " + filename + " : "
+            + error.substr(error.find(": ") == std::string::npos ? 0 : error.find(": ") + 2));
+}
+
+void CliState::commit_outputs()
+{
+    std::string error;
+    for (auto& [tmp, final] : pending_outputs)
+        if (!commit_file(tmp, final, error))
+            throw CliError(error);
+    pending_outputs.clear();
+}
+
+void CliState::discard_outputs()
+{
+    std::error_code ec;
+    for (auto& [tmp, final] : pending_outputs)
+        std::filesystem::remove(tmp, ec);
+    pending_outputs.clear();
 }
 
 } // namespace texsyn::cli

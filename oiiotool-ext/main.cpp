@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // texsyn: an oiiotool-style command line over libtexsyn. Parsing and dispatch only.
 #include "cli_state.h"
+#include "output_format.h"
 
 #include <cstdio>
 #include <cstring>
@@ -53,6 +54,15 @@ int64_t int_argument(const std::string& option, const std::string& value, int64_
     return v;
 }
 
+OIIO::TypeDesc data_format_argument(const std::string& v)
+{
+    OIIO::TypeDesc t(v);
+    if (t != OIIO::TypeUInt8 && t != OIIO::TypeUInt16 && t != OIIO::TypeHalf
+        && t != OIIO::TypeFloat)
+        throw CliError("-d : unknown data format '" + v + "' (use uint8, uint16, half or float)");
+    return t;
+}
+
 void check_output_path(const std::string& out, const std::vector<std::string>& inputs)
 {
     for (const std::string& in : inputs)
@@ -68,6 +78,8 @@ void check_output_path(const std::string& out, const std::vector<std::string>& i
     if (dir.empty())
         dir = ".";
     std::error_code ec;
+    if (std::filesystem::is_directory(out, ec))
+        throw CliError("-o " + out + " : is a directory");
     if (!std::filesystem::is_directory(dir, ec))
         throw CliError("-o " + out + " : directory " + dir.string() + " does not exist");
     if (::access(dir.c_str(), W_OK) != 0)
@@ -79,7 +91,16 @@ void check_output_path(const std::string& out, const std::vector<std::string>& i
 enum class Early { Run, Exit };
 Early parse_globals(CliState& state, const std::vector<std::string>& args)
 {
-    std::vector<std::string> inputs, outputs;
+    std::vector<std::string> inputs, outputs, colorspaces;
+    // Everything that makes or changes an image must be followed by an -o that writes it.
+    size_t last_output = 0;
+    for (size_t i = 0; i < args.size(); ++i)
+        if (args[i] == "-o")
+            last_output = i + 1;
+    auto check_written = [&](size_t i) {
+        if (last_output > 0 && i > last_output) // no -o at all is reported after the loop
+            throw CliError(args[i] + " : has no effect, nothing is written after it (add -o FILE)");
+    };
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         if (takes_argument(a)) {
@@ -93,9 +114,13 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             else if (a == "--colorconfig")
                 state.colorconfig_path = v;
             else if (a == "-d")
-                state.data_format = v;
+                state.data_format = data_format_argument(v);
             else if (a == "-o")
                 outputs.push_back(v);
+            else if (a == "--iscolorspace" || a == "--tocolorspace") {
+                check_written(i - 1);
+                colorspaces.push_back(a + " " + v);
+            }
         } else if (is_flag(a)) {
             if (a == "--help" || a == "-h") {
                 print_help();
@@ -114,27 +139,32 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             if (a == "--subbands")
                 state.subbands = true;
         } else if (!a.empty() && a[0] == '-') {
-            if (!is_command(split_command(a).first))
+            auto [name, modifiers] = split_command(a);
+            if (!is_command(name))
                 throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
+            check_written(i);
+            parse_pyramid_options(name, modifiers);
         } else {
+            check_written(i);
             inputs.push_back(a);
         }
     }
-    if (!state.data_format.empty()) {
-        OIIO::TypeDesc t(state.data_format);
-        if (t != OIIO::TypeUInt8 && t != OIIO::TypeUInt16 && t != OIIO::TypeHalf
-            && t != OIIO::TypeFloat)
-            throw CliError("-d : unknown data format '" + state.data_format
-                + "' (use uint8, uint16, half or float)");
-    }
+    if (outputs.empty() && !args.empty())
+        throw CliError("nothing to do: no -o FILE (see texsyn --help)");
     for (const std::string& out : outputs) {
         check_output_path(out, inputs);
         if (state.subbands && !OIIO::Strutil::iends_with(out, ".exr"))
             throw CliError(
                 "-o " + out + " : --subbands writes a multi-part OpenEXR; name the output *.exr");
+        if (state.data_format != OIIO::TypeUnknown)
+            output_pixel_type(out, state.data_format, OIIO::TypeUnknown);
     }
-    if (outputs.empty() && !args.empty())
-        throw CliError("nothing to do: no -o FILE (see texsyn --help)");
+    for (const std::string& option : colorspaces) {
+        const std::string name = option.substr(option.find(' ') + 1);
+        if (state.colors().resolve(name).empty())
+            throw CliError(
+                option.substr(0, option.find(' ')) + " : unknown colour space '" + name + "'");
+    }
     return Early::Run;
 }
 
@@ -152,8 +182,6 @@ void run(CliState& state, const std::vector<std::string>& args)
                 else
                     reinterpret_input(state, v);
             } else if (a == "--tocolorspace") {
-                if (state.colors().resolve(v).empty())
-                    throw CliError("--tocolorspace : unknown colour space '" + v + "'");
                 if (state.stack.empty())
                     state.pending_tocolorspace = v;
                 else
@@ -188,14 +216,17 @@ int main(int argc, char* argv[])
         }
         if (parse_globals(state, args) == Early::Exit)
             return 0;
-        state.progress = state.verbose || ::isatty(STDERR_FILENO);
+        state.progress = ::isatty(STDERR_FILENO);
         if (state.threads > 0)
             OIIO::attribute("threads", state.threads);
         run(state, args);
+        state.commit_outputs();
     } catch (const CliError& e) {
+        state.discard_outputs();
         std::fprintf(stderr, "texsyn ERROR: %s\n", e.what());
         return 1;
     } catch (const std::exception& e) {
+        state.discard_outputs();
         std::fprintf(stderr, "texsyn ERROR: %s\n", e.what());
         return 1;
     }

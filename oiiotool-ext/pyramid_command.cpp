@@ -17,16 +17,26 @@ void show_progress(float fraction)
 
 } // namespace
 
-void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers)
+PyramidOptions parse_pyramid_options(const std::string& command, const std::string& modifiers)
 {
     PyramidOptions opt;
     std::vector<std::pair<std::string, std::string>> pairs;
     std::string error;
     if (!split_option_string(modifiers, pairs, error))
         throw CliError(command + " : " + error);
-    for (auto& [name, value] : pairs)
-        if (!PyramidOptions::table().set(opt, name, value, error))
+    for (size_t i = 0; i < pairs.size(); ++i) {
+        for (size_t j = 0; j < i; ++j)
+            if (pairs[j].first == pairs[i].first)
+                throw CliError(command + " : " + pairs[i].first + " is given twice");
+        if (!PyramidOptions::table().set(opt, pairs[i].first, pairs[i].second, error))
             throw CliError(command + " : " + error);
+    }
+    return opt;
+}
+
+void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers)
+{
+    PyramidOptions opt = parse_pyramid_options(command, modifiers);
     opt.seed = state.seed;
     opt.nthreads = state.threads;
     if (state.progress)
@@ -36,6 +46,7 @@ void run_pyramid(CliState& state, const std::string& command, const std::string&
     StackImage result;
     result.source = sample.source;
     result.input_colorspace = sample.input_colorspace;
+    result.input_format = sample.input_format;
     result.output_colorspace = sample.output_colorspace;
     auto start = std::chrono::steady_clock::now();
     bool ok = pyramid_synthesize(

@@ -257,10 +257,11 @@ TEST_F(Cli, SubbandsEXRCanBeTakenApartWithStockOiiotool)
     EXPECT_EQ(band.spec().width, 32); // scale 2 of a 128-wide synthesis
     EXPECT_EQ(band.spec().height, 24);
     EXPECT_EQ(band.spec().channelnames, (std::vector<std::string> { "pc0", "pc1", "pc2" }));
-    EXPECT_EQ(read("low.exr").spec().width, 8); // 4 scales of a 128-wide sample
+    // 3 scales: the most that keeps the 96-pixel side of the output >= 8 pixels.
+    EXPECT_EQ(read("low.exr").spec().width, 16);
     OIIO::ImageBuf synth((dir / "bands.exr").string());
     EXPECT_EQ(synth.spec().get_string_attribute("oiio:subimagename"), "synth");
-    EXPECT_EQ(synth.nsubimages(), 1 + 2 * (1 + 4 * 4 + 1));
+    EXPECT_EQ(synth.nsubimages(), 1 + 2 * (1 + 3 * 4 + 1));
 }
 
 TEST_F(Cli, AllChannelCountsAndPixelTypesWork)
@@ -395,4 +396,104 @@ TEST_F(Cli, OutputsAreCheckedBeforeAnyWork)
     expect_failure("--subbands stucco.png --pyramid:size=32x32:iterations=1 -o out.png",
         "texsyn ERROR: -o out.png : --subbands writes a multi-part OpenEXR; name the "
         "output *.exr");
+}
+
+TEST_F(Cli, ColourUnderZeroOrPartialAlphaSurvives)
+{
+    // 8-bit PNG colour is stored un-associated: it must not be lost where alpha is 0, nor
+    // rounded down where alpha is 0.5.
+    for (float alpha : { 0.0f, 0.5f }) {
+        std::string in = "alpha" + std::to_string(int(alpha * 10)) + ".png";
+        OIIO::ImageBuf rgba = OIIO::ImageBufAlgo::channels(read("stucco.png"), 4, { 0, 1, 2, -1 },
+            { 0.0f, 0.0f, 0.0f, alpha }, { "R", "G", "B", "A" });
+        rgba.specmod().alpha_channel = 3;
+        rgba.specmod().attribute("oiio:UnassociatedAlpha", 1); // store the colour as is
+        ASSERT_TRUE(rgba.write((dir / in).string(), OIIO::TypeUInt8)) << rgba.geterror();
+        CliRun r = texsyn(in + " --pyramid:size=128x128:iterations=2 -o out.png");
+        ASSERT_EQ(r.status, 0) << r.err;
+        // read_image() asks for un-associated colour, as stored in the PNG.
+        OIIO::ImageBuf sample = read("stucco.png");
+        OIIO::ImageBuf out = read("out.png");
+        auto s = OIIO::ImageBufAlgo::computePixelStats(sample);
+        auto o = OIIO::ImageBufAlgo::computePixelStats(out);
+        ASSERT_EQ(out.nchannels(), 4);
+        for (int c = 0; c < 3; ++c) // histogram matched: same mean within a code value
+            EXPECT_NEAR(o.avg[c], s.avg[c], 1.0 / 255.0) << "alpha " << alpha << " channel " << c;
+        EXPECT_NEAR(o.avg[3], alpha, 1.0 / 255.0);
+    }
+}
+
+TEST_F(Cli, ChannelsAfterAlphaAreNeitherAssociatedNorColourConverted)
+{
+    OIIO::ImageSpec spec(32, 32, 5, OIIO::TypeFloat);
+    spec.channelnames = { "R", "G", "B", "A", "Z" };
+    spec.alpha_channel = 3;
+    spec.z_channel = 4;
+    OIIO::ImageBuf buf(spec);
+    OIIO::ImageBufAlgo::noise(buf, "uniform", 0.1f, 0.9f, false, 5);
+    OIIO::ImageBufAlgo::fill(
+        buf, { 0.0f, 0.0f, 0.0f, 0.5f, 3.0f }, OIIO::ROI(0, 32, 0, 32, 0, 1, 3, 5));
+    ASSERT_TRUE(buf.write((dir / "rgbaz.exr").string()));
+    CliRun r = texsyn("rgbaz.exr --pyramid:size=48x48:iterations=1 --tocolorspace sRGB -o out.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto o = OIIO::ImageBufAlgo::computePixelStats(read("out.exr"));
+    EXPECT_NEAR(o.min[3], 0.5, 1e-3); // half precision
+    EXPECT_NEAR(o.max[4], 3.0, 1e-3);
+    EXPECT_NEAR(o.min[4], 3.0, 1e-3);
+}
+
+TEST_F(Cli, PixelTypesFollowTheInputAndTheFormat)
+{
+    std::string cmd = "cd " + quote(dir.string()) + " && oiiotool stucco.png -d uint16 -o s16.png";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    ASSERT_EQ(texsyn("s16.png --pyramid:size=32x32:iterations=1 -o o16.png").status, 0);
+    EXPECT_EQ(read("o16.png").nativespec().format, OIIO::TypeUInt16);
+    ASSERT_EQ(texsyn("s16.png --pyramid:size=32x32:iterations=1 -o o16.tif").status, 0);
+    EXPECT_EQ(read("o16.tif").nativespec().format, OIIO::TypeUInt16);
+    // The description carries the recipe where a format drops unknown attributes.
+    EXPECT_NE(read("o16.tif")
+                  .spec()
+                  .get_string_attribute("ImageDescription")
+                  .find("--pyramid:size=32x32"),
+        std::string::npos);
+    expect_failure("-d float stucco.png --pyramid -o x.jpg",
+        "texsyn ERROR: -d float : .jpg files hold uint8",
+        { "stucco.png", "s16.png", "o16.png", "o16.tif" });
+    expect_failure("-d uint8 stucco.png --pyramid -o x.exr",
+        "texsyn ERROR: -d uint8 : .exr files hold half, float",
+        { "stucco.png", "s16.png", "o16.png", "o16.tif" });
+}
+
+TEST_F(Cli, AFailedRunLeavesNoOutputAtAll)
+{
+    // The first -o succeeds before the second input fails: nothing may be left.
+    expect_failure("stucco.png --pyramid:size=32x32:iterations=1 -o a.png missing.png "
+                   "--pyramid -o b.png",
+        "texsyn ERROR: missing.png: no such file");
+    expect_failure("stucco.png --pyramid:size=32x32:iterations=1 -o a.png --iscolorspace Raw",
+        "texsyn ERROR: --iscolorspace : has no effect, nothing is written after it (add -o FILE)");
+    expect_failure("stucco.png --pyramid:size=32x32:iterations=1 -o a.png stucco.png "
+                   "--pyramid:bogus=1 -o b.png",
+        "texsyn ERROR: --pyramid : unknown option 'bogus' (known: size, iterations, pyramid, "
+        "scales, orientations, histogram, fft)");
+    expect_failure("stucco.png --pyramid:size=32x32:size=64x64 -o a.png",
+        "texsyn ERROR: --pyramid : size is given twice");
+    fs::create_directory(dir / "taken.png");
+    expect_failure("stucco.png --pyramid -o taken.png",
+        "texsyn ERROR: -o taken.png : is a directory", { "stucco.png", "taken.png" });
+}
+
+TEST_F(Cli, SmallOutputsUseFewerScales)
+{
+    CliRun r = texsyn("stucco.png --pyramid:size=16x16 -o small.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(read("small.exr").spec().get_string_attribute("synth:options").find(":scales=1:"),
+        std::string::npos);
+}
+
+TEST_F(Cli, VerboseOutputIntoAPipeHasNoProgressLines)
+{
+    CliRun r = texsyn("-v stucco.png --pyramid:size=32x32:iterations=1 -o out.exr");
+    ASSERT_EQ(r.status, 0);
+    EXPECT_EQ(r.err.find('\r'), std::string::npos);
 }

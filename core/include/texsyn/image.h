@@ -55,29 +55,36 @@ private:
 int wrap_coordinate(int i, int n, Boundary b);
 
 /// A multi-channel image as planes of equal size, with OIIO-style channel names.
+/// Channel layout: colour channels first, then alpha (if any), then extra channels (Z,
+/// masks, …) which are neither colour converted nor associated with alpha.
 struct PlanarImage {
     std::vector<Plane> channels;
     std::vector<std::string> channel_names;
-    int alpha_channel = -1; ///< index of the alpha channel, or -1
+    int alpha_channel = -1; ///< index of the alpha channel (>= 1), or -1
 
     int width() const { return channels.empty() ? 0 : channels[0].width(); }
     int height() const { return channels.empty() ? 0 : channels[0].height(); }
     int nchannels() const { return int(channels.size()); }
-    /// Number of colour (non-alpha) channels, which are always the first ones.
+    /// Number of colour channels: those before alpha, or all of them without alpha.
     int ncolor() const { return alpha_channel >= 0 ? alpha_channel : nchannels(); }
 };
 
 /// Reads the full data window of `src` (any pixel type; lazily read files are read here)
-/// into float planes. Channel names and the alpha channel come from src.spec().
-/// Associated (premultiplied) colour is un-associated so that colour statistics do not
-/// depend on alpha. Fails (false, message in `error`) if src has an error, is empty, is
-/// not 2-D (depth > 1), or if any pixel is NaN or infinite (the message names the first
-/// offending pixel and channel).
+/// into float planes. Channel names and the alpha channel come from src.spec() (an alpha
+/// channel at index 0 is treated as an ordinary channel). Colour is returned un-associated
+/// from alpha, so that colour statistics do not depend on coverage: associated colour
+/// (OIIO's convention) is divided by alpha where alpha > 0, unless the spec says
+/// "oiio:UnassociatedAlpha" (read_image() asks for that, so 8-bit PNG colour under
+/// zero alpha survives). Fails (false, message in `error`) if src has an error, is
+/// empty, is not 2-D (depth > 1), or if any pixel is NaN or infinite (the message names
+/// the first offending pixel and channel).
 bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::string& error);
 
 /// Writes `src` into `dst` as a new float ImageBuf of the same size and channels, with
-/// origin (0,0) and colour re-associated with alpha (OIIO's in-memory convention).
+/// origin (0,0). With `associate` (OIIO's in-memory convention, and what OpenEXR stores)
+/// colour channels are multiplied by alpha; otherwise they are left un-associated and the
+/// spec says "oiio:UnassociatedAlpha" = 1, which PNG and TIFF writers store losslessly.
 /// Never fails for a well-formed PlanarImage (all planes the same size, >= 1 channel).
-void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst);
+void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst, bool associate = true);
 
 } // namespace texsyn

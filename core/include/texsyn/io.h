@@ -9,8 +9,10 @@
 
 namespace texsyn {
 
-/// Reads the first subimage of `filename` completely, converting pixels to float. Fails
-/// (false, "FILE: reason") if the file is missing, unreadable, truncated or not an image.
+/// Reads the first subimage of `filename` completely, converting pixels to float, with
+/// colour left un-associated from alpha where the file stores it so (the spec then says
+/// "oiio:UnassociatedAlpha"). Fails (false, "FILE: reason") if the file is missing,
+/// unreadable, truncated or not an image.
 bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error);
 
 /// A path in the same directory as `filename`, with the same extension (so OIIO picks the

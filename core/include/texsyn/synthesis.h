@@ -10,7 +10,8 @@
 //    ColorConfig::convert (color.h) does that; the `texsyn` tool does it for you.
 //  - The result is a float image with the sample's channels and channel names, its
 //    pixels scene-linear, origin (0,0), carrying synth:version, synth:method, synth:seed
-//    and synth:options metadata.
+//    and synth:options metadata. Colour is associated with alpha as in the sample: a
+//    sample flagged "oiio:UnassociatedAlpha" gives an un-associated result, so flagged.
 //  - Deterministic: a seed gives bit-identical output whatever opt.nthreads is.
 #pragma once
 
@@ -35,7 +36,7 @@ struct PyramidOptions {
     int height = 0;
     int iterations = 5; ///< §3.3: "about 5 iterations"
     PyramidKind pyramid = PyramidKind::Steerable;
-    int scales = 0;       ///< 0 = max_pyramid_scales(sample)
+    int scales = 0;       ///< 0 = min(max_pyramid_scales(sample), (output)), at least 1
     int orientations = 4; ///< steerable bands per scale, 1..8
     HistogramMode histogram = HistogramMode::Exact;
     FftBackend fft = FftBackend::Kiss;

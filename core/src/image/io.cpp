@@ -25,7 +25,11 @@ bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& e
         error = filename + ": is a directory, not an image";
         return false;
     }
-    OIIO::ImageBuf buf(filename);
+    // Ask for un-associated colour where the file stores it that way (PNG, most TIFF):
+    // OIIO would otherwise premultiply 8-bit values, losing colour under low alpha.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    OIIO::ImageBuf buf(filename, 0, 0, nullptr, &config);
     // force=true reads all pixels now, so truncation is found here and not mid-synthesis.
     if (!buf.read(0, 0, true, OIIO::TypeFloat)) {
         std::string msg = buf.geterror();

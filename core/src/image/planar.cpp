@@ -56,10 +56,10 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
         return false;
     }
     PlanarImage out;
-    out.alpha_channel = spec.alpha_channel;
-    // Colour channels first, alpha last: algorithms rely on this order.
-    if (out.alpha_channel >= 0 && out.alpha_channel != nc - 1)
-        out.alpha_channel = -1;
+    out.alpha_channel
+        = spec.alpha_channel >= 1 && spec.alpha_channel < nc ? spec.alpha_channel : -1;
+    const bool associated
+        = out.alpha_channel >= 0 && !spec.get_int_attribute("oiio:UnassociatedAlpha", 0);
     for (int c = 0; c < nc; ++c) {
         out.channels.emplace_back(w, h);
         out.channel_names.push_back(
@@ -78,7 +78,7 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
                 }
                 out.channels[c](x, y) = p[c];
             }
-            if (out.alpha_channel >= 0) {
+            if (associated) {
                 float a = p[out.alpha_channel];
                 if (a > 0.0f && a != 1.0f)
                     for (int c = 0; c < out.alpha_channel; ++c)
@@ -90,12 +90,15 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
     return true;
 }
 
-void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst)
+void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst, bool associate)
 {
     const int w = src.width(), h = src.height(), nc = src.nchannels();
     OIIO::ImageSpec spec(w, h, nc, OIIO::TypeFloat);
     spec.channelnames = src.channel_names;
     spec.alpha_channel = src.alpha_channel;
+    const bool multiply = associate && src.alpha_channel >= 0;
+    if (!associate && src.alpha_channel >= 0)
+        spec.attribute("oiio:UnassociatedAlpha", 1);
     dst.reset(spec);
     std::vector<float> pixels(size_t(w) * size_t(h) * size_t(nc));
     for (int y = 0; y < h; ++y)
@@ -104,7 +107,7 @@ void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst)
             float a = src.alpha_channel >= 0 ? src.channels[src.alpha_channel](x, y) : 1.0f;
             for (int c = 0; c < nc; ++c) {
                 float v = src.channels[c](x, y);
-                p[c] = (src.alpha_channel >= 0 && c != src.alpha_channel) ? v * a : v;
+                p[c] = (multiply && c < src.alpha_channel) ? v * a : v;
             }
         }
     dst.set_pixels(dst.roi(), OIIO::TypeFloat, pixels.data());

@@ -154,7 +154,10 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Pyramid
             max_scales);
         return false;
     }
-    const int scales = opt.scales ? opt.scales : max_scales;
+    // By default the most the sample allows, and no more than keeps the output's coarsest
+    // band at 8 pixels too (a small output cannot hold the sample's coarsest scales).
+    const int scales
+        = opt.scales ? opt.scales : std::max(1, std::min(max_scales, max_pyramid_scales(w, h)));
     if (std::min(w, h) < (1 << scales)) {
         dst.errorfmt("size={}x{} is too small for {} scales (each side at least {})", w, h, scales,
             1 << scales);
@@ -187,7 +190,9 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Pyramid
     std::vector<std::vector<Plane>> sample_bands(src.nchannels()), synth_bands(src.nchannels());
     for (int c = 0; c < src.nchannels(); ++c) {
         const Plane& channel = src.channels[c];
-        component_names.push_back(c == src.alpha_channel ? "A" : "pc" + std::to_string(c));
+        component_names.push_back(c < ct.n ? "pc" + std::to_string(c)
+                : c == src.alpha_channel   ? std::string("A")
+                                           : src.channel_names[size_t(c)]);
         ChannelTarget target = analyse_channel(
             channel, *analysis, opt.pyramid, opt.fft, opt.nthreads, sample_bands[c]);
         if (is_constant(channel) || (c < ct.n && ct.constant[c])) {
@@ -224,7 +229,9 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Pyramid
         match_histogram(
             out.channels[c], QuantileTable(original.channels[c]), opt.histogram, opt.nthreads);
 
-    imagebuf_from_planes(out, dst);
+    // Same alpha convention as the sample: un-associated colour stays so (and survives
+    // where alpha is 0), associated colour (OIIO's default) is re-associated.
+    imagebuf_from_planes(out, dst, !sample.spec().get_int_attribute("oiio:UnassociatedAlpha", 0));
     PyramidOptions resolved = opt;
     resolved.width = w;
     resolved.height = h;

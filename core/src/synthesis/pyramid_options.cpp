@@ -16,7 +16,8 @@ const OptionTable<PyramidOptions>& PyramidOptions::table()
             { { "steerable", PyramidKind::Steerable }, { "laplacian", PyramidKind::Laplacian } },
             "subband decomposition: steerable (oriented bands) or laplacian");
         t.integer("scales", &O::scales, 0, 16,
-            "pyramid scales; 0 = the most the sample allows (coarsest band >= 8 px)");
+            "pyramid scales; 0 = the most that keeps the coarsest band of the sample and of the "
+            "output >= 8 px");
         t.integer("orientations", &O::orientations, 1, 8,
             "oriented bands per scale of the steerable pyramid");
         t.choice("histogram", &O::histogram,

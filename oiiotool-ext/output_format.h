@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: Apache-2.0
+// Which pixel types an output file can hold, and the default one (docs/cli.md "-d").
+#pragma once
+
+#include <string>
+
+#include <OpenImageIO/typedesc.h>
+
+namespace texsyn::cli {
+
+/// The pixel type to write `filename` with: `requested` (-d; TypeUnknown = default) if the
+/// format holds it; by default the input's type where the format holds it (16-bit PNG in,
+/// 16-bit PNG out; float EXR in, float EXR out), else the format's first type: half for
+/// OpenEXR, float for Radiance HDR, uint8 for PNG, JPEG, TIFF and formats texsyn does not
+/// know. Throws CliError naming -d and the types the format holds if `requested` does not
+/// fit a format texsyn knows.
+OIIO::TypeDesc output_pixel_type(
+    const std::string& filename, OIIO::TypeDesc requested, OIIO::TypeDesc input_type);
+
+/// Whether pixels of `type` are written scene-linear by default (floating point) rather
+/// than in the input's encoding (integers).
+bool is_linear_type(OIIO::TypeDesc type);
+
+/// Whether `filename`'s format stores colour associated with alpha (OpenEXR does; PNG,
+/// TIFF and the others are written un-associated).
+bool stores_associated_alpha(const std::string& filename);
+
+} // namespace texsyn::cli
