@@ -7,7 +7,10 @@
 #include "fft/fft_pvt.h"
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <new>
+#include <type_traits>
 #include <vector>
 
 #include <OpenImageIO/parallel.h>
@@ -29,31 +32,127 @@ OIIO::paropt fft_paropt(int nthreads)
 // Columns per gather block: 16 complex values are two cache lines of each row.
 constexpr int64_t column_block = 16;
 
+// A complex FFT of length n (unnormalised, either direction). KissFFT handles the factors
+// 2, 3, 4 and 5 with fast butterflies but any other prime factor p with an O(p) generic
+// one, so a prime length costs O(n^2): a 1009-wide row took 10x as long as a 1024-wide
+// one. Such lengths go through Bluestein's chirp-z algorithm instead: the transform
+// becomes a circular convolution of a 5-smooth length m >= 2n - 1, done with two KissFFTs
+// of length m.
 class KissCfg {
 public:
     KissCfg(int n, bool inverse)
         : m_n(n)
-        , m_cfg(kiss_fft_alloc(n, inverse ? 1 : 0, nullptr, nullptr))
     {
-        if (!m_cfg)
-            throw std::bad_alloc();
+        if (!use_bluestein(n)) {
+            m_direct = make_cfg(n, inverse);
+            return;
+        }
+        m_m = bluestein_length(n);
+        m_forward_m = make_cfg(m_m, false);
+        m_inverse_m = make_cfg(m_m, true);
+        // Chirp w_k = exp(-+ i pi k^2 / n); k^2 is reduced mod 2n so the angle stays exact.
+        const double sign = inverse ? 1.0 : -1.0;
+        m_chirp.resize(size_t(n));
+        for (int64_t k = 0; k < n; ++k) {
+            const double angle = sign * M_PI * double((k * k) % (2 * int64_t(n))) / n;
+            m_chirp[size_t(k)] = Cpx(float(std::cos(angle)), float(std::sin(angle)));
+        }
+        // The convolution kernel conj(w_k) at k and m - k, transformed once; 1/m folded in.
+        std::vector<Cpx> b(size_t(m_m), Cpx(0.0f));
+        for (int k = 0; k < n; ++k) {
+            b[size_t(k)] = std::conj(m_chirp[size_t(k)]) / float(m_m);
+            if (k > 0)
+                b[size_t(m_m - k)] = b[size_t(k)];
+        }
+        m_kernel.resize(size_t(m_m));
+        kiss_fft(m_forward_m.get(), as_kiss(b.data()), as_kiss(m_kernel.data()));
     }
-    ~KissCfg() { kiss_fft_free(m_cfg); }
-    KissCfg(const KissCfg&) = delete;
-    KissCfg& operator=(const KissCfg&) = delete;
 
     void run(const Cpx* in, Cpx* out) const
     {
-        if (m_n == 1) // kiss_fft's generic radix path is not meant for n = 1
+        if (m_n == 1) { // kiss_fft's generic radix path is not meant for n = 1
             out[0] = in[0];
-        else
-            kiss_fft(m_cfg, reinterpret_cast<const kiss_fft_cpx*>(in),
-                reinterpret_cast<kiss_fft_cpx*>(out));
+            return;
+        }
+        if (m_direct) {
+            kiss_fft(m_direct.get(), as_kiss(in), as_kiss(out));
+            return;
+        }
+        thread_local std::vector<Cpx> scratch;
+        if (scratch.size() < 2 * size_t(m_m))
+            scratch.resize(2 * size_t(m_m));
+        Cpx* a = scratch.data();
+        Cpx* fa = a + m_m;
+        for (int k = 0; k < m_n; ++k)
+            a[k] = in[k] * m_chirp[size_t(k)];
+        std::fill(a + m_n, a + m_m, Cpx(0.0f));
+        kiss_fft(m_forward_m.get(), as_kiss(a), as_kiss(fa));
+        for (int k = 0; k < m_m; ++k)
+            fa[k] *= m_kernel[size_t(k)];
+        kiss_fft(m_inverse_m.get(), as_kiss(fa), as_kiss(a));
+        for (int k = 0; k < m_n; ++k)
+            out[k] = a[k] * m_chirp[size_t(k)];
     }
 
 private:
+    struct CfgFree {
+        void operator()(kiss_fft_cfg cfg) const { kiss_fft_free(cfg); }
+    };
+    using Cfg = std::unique_ptr<std::remove_pointer_t<kiss_fft_cfg>, CfgFree>;
+
+    static Cfg make_cfg(int n, bool inverse)
+    {
+        Cfg cfg(kiss_fft_alloc(n, inverse ? 1 : 0, nullptr, nullptr));
+        if (!cfg)
+            throw std::bad_alloc();
+        return cfg;
+    }
+    static kiss_fft_cpx* as_kiss(Cpx* p) { return reinterpret_cast<kiss_fft_cpx*>(p); }
+    static const kiss_fft_cpx* as_kiss(const Cpx* p)
+    {
+        return reinterpret_cast<const kiss_fft_cpx*>(p);
+    }
+
+    // Sum of the prime factors of n, with multiplicity: KissFFT's cost is ~n times this.
+    static int64_t prime_factor_sum(int64_t n)
+    {
+        int64_t sum = 0;
+        for (int64_t p = 2; p * p <= n; ++p)
+            while (n % p == 0) {
+                sum += p;
+                n /= p;
+            }
+        return n > 1 ? sum + n : sum;
+    }
+
+    // The convolution length: the smallest m >= 2n - 1 whose factors are 2, 3 and 5, which
+    // KissFFT has fast butterflies for.
+    static int bluestein_length(int n)
+    {
+        for (int64_t m = 2 * int64_t(n) - 1;; ++m) {
+            int64_t r = m;
+            for (int64_t p : { 2, 3, 5 })
+                while (r % p == 0)
+                    r /= p;
+            if (r == 1)
+                return int(m);
+        }
+    }
+
+    // Bluestein when KissFFT's direct cost exceeds that of the two length-m transforms.
+    static bool use_bluestein(int n)
+    {
+        if (n < 2)
+            return false;
+        const int64_t m = bluestein_length(n);
+        return int64_t(n) * prime_factor_sum(n) > 2 * m * prime_factor_sum(m);
+    }
+
     int m_n;
-    kiss_fft_cfg m_cfg;
+    Cfg m_direct;
+    int m_m = 0;
+    Cfg m_forward_m, m_inverse_m;
+    std::vector<Cpx> m_chirp, m_kernel;
 };
 
 // Per-thread task scratch, grown on demand. Tasks never wait on other tasks while they
