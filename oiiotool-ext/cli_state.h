@@ -10,6 +10,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/color.h>
+#include <texsyn/recipe.h>
 #include <texsyn/synthesis.h>
 
 namespace texsyn::cli {
@@ -28,6 +29,8 @@ struct StackImage {
     std::string input_colorspace;                  ///< the space the sample file was in
     std::string output_colorspace;                 ///< set by --tocolorspace; "" = default policy
     std::vector<NamedImage> subbands;              ///< filled when --subbands is on
+    bool has_recipe = false; ///< a synthesis of a sample file: `recipe` describes it
+    Recipe recipe;
 };
 
 struct CliState {
@@ -81,6 +84,10 @@ PyramidOptions parse_pyramid_options(const std::string& command, const std::stri
 
 /// --pyramid[:name=value…]: pops a sample, pushes the synthesis.
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// --recipe FILE: writes the recipe of the top image (a synthesis of a sample file), with
+/// paths relative to FILE's folder, to a temporary file in pending_outputs.
+void write_recipe(CliState& state, const std::string& filename);
 
 /// Prints --help, --list-methods and --version text to stdout.
 void print_help();

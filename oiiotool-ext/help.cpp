@@ -46,6 +46,8 @@ void print_help()
         "\n"
         "Commands:\n"
         "    -o FILE               Write the current image to FILE (atomically)\n"
+        "    --recipe FILE.texsyn  Write the recipe of the current synthesis: OIIO tools\n"
+        "                          open it as an image with texsyn's format plugin\n"
         "    --pyramid[:name=value...]\n"
         "                          Heeger & Bergen 1995 pyramid synthesis of the current\n"
         "                          image. Options:\n",

@@ -6,6 +6,7 @@
 #include "quiet_stderr.h"
 
 #include <filesystem>
+#include <fstream>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/strutil.h>
@@ -47,14 +48,11 @@ void reinterpret_input(CliState& state, const std::string& colorspace)
     std::string space = cc.resolve(colorspace);
     if (space.empty())
         throw CliError("--iscolorspace : unknown colour space '" + colorspace + "'");
-    PlanarImage planes;
     std::string error;
-    if (!planes_from_imagebuf(img.file_pixels, planes, error))
-        throw CliError(img.source + ": " + error);
-    if (!cc.convert(planes, space, cc.scene_linear(), error, state.threads))
-        throw CliError(img.source + ": " + error);
     // Kept un-associated: colour under zero alpha must survive to the output.
-    imagebuf_from_planes(planes, img.buf, false);
+    if (!cc.convert_image(
+            img.file_pixels, space, cc.scene_linear(), false, img.buf, error, state.threads))
+        throw CliError(img.source + ": " + error);
     img.input_colorspace = space;
 }
 
@@ -70,17 +68,12 @@ void write_output(CliState& state, const std::string& filename)
         throw CliError("--tocolorspace : unknown colour space '" + space + "'");
     space = cc.resolve(space);
 
-    PlanarImage planes;
     std::string error;
-    if (!planes_from_imagebuf(img.buf, planes, error)
-        || !cc.convert(planes, cc.scene_linear(), space, error, state.threads))
-        throw CliError("-o " + filename + " : " + error);
     OIIO::ImageBuf out;
-    imagebuf_from_planes(planes, out, stores_associated_alpha(filename));
+    if (!cc.convert_image(img.buf, cc.scene_linear(), space, stores_associated_alpha(filename), out,
+            error, state.threads))
+        throw CliError("-o " + filename + " : " + error);
     OIIO::ImageSpec& spec = out.specmod();
-    for (const OIIO::ParamValue& p : img.buf.spec().extra_attribs)
-        if (OIIO::Strutil::starts_with(p.name(), "synth:"))
-            spec.attribute(p.name(), p.type(), p.data());
     spec.attribute("synth:sample", OIIO::Filesystem::filename(img.source));
     spec.attribute("synth:colorspace", space);
     spec.attribute("synth:commandline", state.command_line);
@@ -105,6 +98,23 @@ void write_output(CliState& state, const std::string& filename)
     if (!ok)
         throw CliError("-o " + filename + " : "
             + error.substr(error.find(": ") == std::string::npos ? 0 : error.find(": ") + 2));
+}
+
+void write_recipe(CliState& state, const std::string& filename)
+{
+    StackImage& img = state.top("--recipe");
+    if (!img.has_recipe)
+        throw CliError("--recipe " + filename
+            + " : the current image is not a synthesis of a sample file (e.g. --pyramid)");
+    Recipe recipe = img.recipe;
+    recipe.tocolorspace = img.output_colorspace;
+    const std::string dir = std::filesystem::path(filename).parent_path().string();
+    const std::string tmp = temporary_path_for(filename);
+    state.pending_outputs.emplace_back(tmp, filename);
+    std::ofstream out(tmp, std::ios::binary);
+    out << recipe_to_json(recipe, dir.empty() ? "." : dir);
+    if (!out.flush())
+        throw CliError("--recipe " + filename + " : cannot write");
 }
 
 void CliState::commit_outputs()

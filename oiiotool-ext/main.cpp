@@ -22,7 +22,7 @@ namespace {
 bool takes_argument(const std::string& a)
 {
     return a == "--seed" || a == "--threads" || a == "--colorconfig" || a == "--iscolorspace"
-        || a == "--tocolorspace" || a == "-d" || a == "-o";
+        || a == "--tocolorspace" || a == "-d" || a == "-o" || a == "--recipe";
 }
 
 bool is_flag(const std::string& a)
@@ -63,27 +63,23 @@ OIIO::TypeDesc data_format_argument(const std::string& v)
     return t;
 }
 
-void check_output_path(const std::string& out, const std::vector<std::string>& inputs)
+// An output path (of -o or --recipe) must not name an input and must be writable.
+void check_output_path(
+    const std::string& option, const std::string& out, const std::vector<std::string>& inputs)
 {
     for (const std::string& in : inputs)
         if (in == out || same_file(in, out))
-            throw CliError("-o " + out + " : refusing to overwrite the input " + in);
-    auto writer = OIIO::ImageOutput::create(out);
-    if (!writer) {
-        (void)OIIO::geterror();
-        throw CliError("-o " + out + " : no image format writes '"
-            + std::filesystem::path(out).extension().string() + "' files");
-    }
+            throw CliError(option + " " + out + " : refusing to overwrite the input " + in);
     std::filesystem::path dir = std::filesystem::path(out).parent_path();
     if (dir.empty())
         dir = ".";
     std::error_code ec;
     if (std::filesystem::is_directory(out, ec))
-        throw CliError("-o " + out + " : is a directory");
+        throw CliError(option + " " + out + " : is a directory");
     if (!std::filesystem::is_directory(dir, ec))
-        throw CliError("-o " + out + " : directory " + dir.string() + " does not exist");
+        throw CliError(option + " " + out + " : directory " + dir.string() + " does not exist");
     if (::access(dir.c_str(), W_OK) != 0)
-        throw CliError("-o " + out + " : directory " + dir.string() + " is not writable");
+        throw CliError(option + " " + out + " : directory " + dir.string() + " is not writable");
 }
 
 // First pass: global options and a check of every argument, before any work is done,
@@ -91,11 +87,11 @@ void check_output_path(const std::string& out, const std::vector<std::string>& i
 enum class Early { Run, Exit };
 Early parse_globals(CliState& state, const std::vector<std::string>& args)
 {
-    std::vector<std::string> inputs, outputs, colorspaces;
+    std::vector<std::string> inputs, outputs, recipes, colorspaces;
     // Everything that makes or changes an image must be followed by an -o that writes it.
     size_t last_output = 0;
     for (size_t i = 0; i < args.size(); ++i)
-        if (args[i] == "-o")
+        if (args[i] == "-o" || args[i] == "--recipe")
             last_output = i + 1;
     auto check_written = [&](size_t i) {
         if (last_output > 0 && i > last_output) // no -o at all is reported after the loop
@@ -117,6 +113,8 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
                 state.data_format = data_format_argument(v);
             else if (a == "-o")
                 outputs.push_back(v);
+            else if (a == "--recipe")
+                recipes.push_back(v);
             else if (a == "--iscolorspace" || a == "--tocolorspace") {
                 check_written(i - 1);
                 colorspaces.push_back(a + " " + v);
@@ -149,10 +147,21 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             inputs.push_back(a);
         }
     }
-    if (outputs.empty() && !args.empty())
+    if (outputs.empty() && recipes.empty() && !args.empty())
         throw CliError("nothing to do: no -o FILE (see texsyn --help)");
+    for (const std::string& recipe : recipes) {
+        check_output_path("--recipe", recipe, inputs);
+        if (!OIIO::Strutil::iends_with(recipe, ".texsyn"))
+            throw CliError("--recipe " + recipe + " : name the recipe *.texsyn");
+    }
     for (const std::string& out : outputs) {
-        check_output_path(out, inputs);
+        check_output_path("-o", out, inputs);
+        auto writer = OIIO::ImageOutput::create(out);
+        if (!writer) {
+            (void)OIIO::geterror();
+            throw CliError("-o " + out + " : no image format writes '"
+                + std::filesystem::path(out).extension().string() + "' files");
+        }
         if (state.subbands && !OIIO::Strutil::iends_with(out, ".exr"))
             throw CliError(
                 "-o " + out + " : --subbands writes a multi-part OpenEXR; name the output *.exr");
@@ -176,6 +185,8 @@ void run(CliState& state, const std::vector<std::string>& args)
             const std::string& v = args[++i];
             if (a == "-o")
                 write_output(state, v);
+            else if (a == "--recipe")
+                write_recipe(state, v);
             else if (a == "--iscolorspace") {
                 if (state.stack.empty())
                     state.pending_iscolorspace = v;

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 
 namespace texsyn::cli {
 
@@ -55,6 +56,18 @@ void run_pyramid(CliState& state, const std::string& command, const std::string&
         std::fprintf(stderr, "\n");
     if (!ok)
         throw CliError(command + " : " + result.buf.geterror());
+    if (sample.file_pixels.initialized()) { // a synthesis of a file: a recipe can say it
+        result.has_recipe = true;
+        result.recipe.sample = sample.source;
+        result.recipe.iscolorspace = sample.input_colorspace;
+        result.recipe.pyramid = opt;
+        result.recipe.pyramid.nthreads = 0;
+        result.recipe.pyramid.progress = nullptr;
+        result.recipe.subbands = state.subbands;
+        result.recipe.colorconfig = state.colorconfig_path;
+        if (const char* env = std::getenv("OCIO"); result.recipe.colorconfig.empty() && env)
+            result.recipe.colorconfig = env;
+    }
     if (state.verbose) {
         double secs
             = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

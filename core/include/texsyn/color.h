@@ -49,6 +49,14 @@ public:
     bool convert(PlanarImage& image, const std::string& from, const std::string& to,
         std::string& error, int nthreads = 0) const;
 
+    /// ImageBuf form of convert(): `src` (any pixel type; colour associated with alpha, or
+    /// un-associated if flagged "oiio:UnassociatedAlpha") becomes `dst`, a float image
+    /// with colour in `to`, associated with alpha if `associate` (else un-associated and
+    /// flagged), and src's metadata. Fails (false, `error`) on NaN/Inf pixels or unknown
+    /// spaces; `dst` is then unchanged.
+    bool convert_image(const OIIO::ImageBuf& src, const std::string& from, const std::string& to,
+        bool associate, OIIO::ImageBuf& dst, std::string& error, int nthreads = 0) const;
+
     /// The colour space an image file's pixels are in: `oiio:ColorSpace` from `spec` if the
     /// config knows it, else `fallback` ("" when unknown). 8- and 16-bit integer files
     /// without a tag are taken as sRGB-encoded ("sRGB - Texture"), float files as
