@@ -2,6 +2,7 @@
 #include <texsyn/fft.h>
 
 #include <new>
+#include <stdexcept>
 
 #include "fft/fft_pvt.h"
 
@@ -50,6 +51,9 @@ std::unique_ptr<RealFft2D> RealFft2D::create(
     } catch (const std::bad_alloc&) {
         error = "out of memory planning a " + std::to_string(width) + "x" + std::to_string(height)
             + " FFT";
+        return nullptr;
+    } catch (const std::runtime_error& e) { // the FFT library could not be loaded
+        error = e.what();
         return nullptr;
     }
 }

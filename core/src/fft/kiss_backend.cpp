@@ -10,10 +10,13 @@
 #include <cmath>
 #include <memory>
 #include <new>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
 #include <OpenImageIO/parallel.h>
+#include <dlfcn.h>
 #include <kiss_fft.h>
 
 namespace texsyn {
@@ -31,6 +34,36 @@ OIIO::paropt fft_paropt(int nthreads)
 
 // Columns per gather block: 16 complex values are two cache lines of each row.
 constexpr int64_t column_block = 16;
+
+// KissFFT's entry points. texsyn does not link libkissfft but loads it here with
+// RTLD_DEEPBIND, so that its own internal calls (kiss_fft -> kiss_fft_stride, ...) bind to
+// itself: libcodec2, which ffmpeg and so OIIO load, bundles another kissfft, and where
+// texsyn is loaded late — as a plugin of stock oiiotool — every kiss_* symbol would
+// otherwise resolve to that copy, whose different rounding broke bit-identical results.
+struct KissApi {
+    decltype(&kiss_fft_alloc) alloc = nullptr;
+    decltype(&kiss_fft) fft = nullptr;
+};
+
+const KissApi& kiss_api()
+{
+    static const KissApi api = [] {
+        KissApi a;
+        const int flags = RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND;
+        void* lib = dlopen(TEXSYN_KISSFFT_SONAME, flags);
+        if (!lib)
+            lib = dlopen(TEXSYN_KISSFFT_FILE, flags);
+        if (lib) {
+            a.alloc = reinterpret_cast<decltype(&kiss_fft_alloc)>(dlsym(lib, "kiss_fft_alloc"));
+            a.fft = reinterpret_cast<decltype(&kiss_fft)>(dlsym(lib, "kiss_fft"));
+        }
+        return a;
+    }();
+    if (!api.alloc || !api.fft)
+        throw std::runtime_error(
+            std::string("cannot load KissFFT (") + TEXSYN_KISSFFT_SONAME + ")");
+    return api;
+}
 
 // A complex FFT of length n (unnormalised, either direction). KissFFT handles the factors
 // 2, 3, 4 and 5 with fast butterflies but any other prime factor p with an O(p) generic
@@ -65,7 +98,7 @@ public:
                 b[size_t(m_m - k)] = b[size_t(k)];
         }
         m_kernel.resize(size_t(m_m));
-        kiss_fft(m_forward_m.get(), as_kiss(b.data()), as_kiss(m_kernel.data()));
+        kiss_api().fft(m_forward_m.get(), as_kiss(b.data()), as_kiss(m_kernel.data()));
     }
 
     void run(const Cpx* in, Cpx* out) const
@@ -75,7 +108,7 @@ public:
             return;
         }
         if (m_direct) {
-            kiss_fft(m_direct.get(), as_kiss(in), as_kiss(out));
+            kiss_api().fft(m_direct.get(), as_kiss(in), as_kiss(out));
             return;
         }
         thread_local std::vector<Cpx> scratch;
@@ -86,10 +119,10 @@ public:
         for (int k = 0; k < m_n; ++k)
             a[k] = in[k] * m_chirp[size_t(k)];
         std::fill(a + m_n, a + m_m, Cpx(0.0f));
-        kiss_fft(m_forward_m.get(), as_kiss(a), as_kiss(fa));
+        kiss_api().fft(m_forward_m.get(), as_kiss(a), as_kiss(fa));
         for (int k = 0; k < m_m; ++k)
             fa[k] *= m_kernel[size_t(k)];
-        kiss_fft(m_inverse_m.get(), as_kiss(fa), as_kiss(a));
+        kiss_api().fft(m_inverse_m.get(), as_kiss(fa), as_kiss(a));
         for (int k = 0; k < m_n; ++k)
             out[k] = a[k] * m_chirp[size_t(k)];
     }
@@ -102,7 +135,7 @@ private:
 
     static Cfg make_cfg(int n, bool inverse)
     {
-        Cfg cfg(kiss_fft_alloc(n, inverse ? 1 : 0, nullptr, nullptr));
+        Cfg cfg(kiss_api().alloc(n, inverse ? 1 : 0, nullptr, nullptr));
         if (!cfg)
             throw std::bad_alloc();
         return cfg;

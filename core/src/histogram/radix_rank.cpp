@@ -42,20 +42,24 @@ inline uint32_t digit(uint32_t key, int pass)
     return (key >> (pass * kBits)) & (kBuckets - 1);
 }
 
+// The entry buffers of the passes, reused by the thread's next call. Only the serial
+// passes touch them: while a thread waits in the parallel count below, OIIO's pool may
+// run another ranking on it (work stealing), which may use them freely.
 struct Scratch {
     std::vector<uint64_t> a, b;
-    std::vector<Histograms> chunk_hist;
 };
 thread_local Scratch tl_scratch;
 
-void count_digits(const float* values, size_t n, Histograms& total, Scratch& s, int nthreads)
+// Per-chunk digit counts: local to the call, never thread-local, since the calling thread
+// may run other rankings while it waits for the chunks.
+void count_digits(const float* values, size_t n, Histograms& total, int nthreads)
 {
     const size_t nchunks = (n + kChunk - 1) / kChunk;
-    s.chunk_hist.resize(nchunks);
+    std::vector<Histograms> chunk_hist(nchunks);
     OIIO::parallel_for_chunked(
         0, int64_t(n), int64_t(kChunk),
         [&](int64_t begin, int64_t end) {
-            Histograms& h = s.chunk_hist[size_t(begin) / kChunk];
+            Histograms& h = chunk_hist[size_t(begin) / kChunk];
             h.fill(0);
             for (int64_t i = begin; i < end; ++i) {
                 const uint32_t key = monotone_key(values[i]);
@@ -65,7 +69,7 @@ void count_digits(const float* values, size_t n, Histograms& total, Scratch& s, 
         },
         OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
     total.fill(0);
-    for (const Histograms& h : s.chunk_hist)
+    for (const Histograms& h : chunk_hist)
         for (size_t j = 0; j < total.size(); ++j)
             total[j] += h[j];
 }
@@ -84,9 +88,9 @@ const uint64_t fused_marker = 0;
 template <class Last>
 const uint64_t* radix_passes(const float* values, size_t n, int nthreads, Last last)
 {
-    Scratch& s = tl_scratch;
     Histograms hist;
-    count_digits(values, n, hist, s, nthreads);
+    count_digits(values, n, hist, nthreads);
+    Scratch& s = tl_scratch;
     s.a.resize(n);
     s.b.resize(n);
 

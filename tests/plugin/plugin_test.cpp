@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: Apache-2.0
+// The OIIO format plugin, driven through the STOCK Debian tools (oiiotool, iinfo, maketx,
+// idiff) and Python, with OIIO_LIBRARY_PATH pointing at the built plugin.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <sys/wait.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <gtest/gtest.h>
+
+#include <texsyn/recipe.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ToolRun {
+    int status = -1;
+    std::string out; // stdout and stderr together
+};
+
+class Plugin : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir = fs::temp_directory_path() / (std::string("texsyn_plugin_") + info->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        fs::copy_file(std::string(TEXSYN_TEST_DATA) + "/stucco_yellow.png", dir / "s.png");
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    // Runs a shell command in the test directory with the plugin on OIIO's search path.
+    ToolRun sh(const std::string& cmd)
+    {
+        std::string full = "cd '" + dir.string() + "' && export OCIO= OIIO_LIBRARY_PATH='"
+            + TEXSYN_PLUGIN_DIR + "' && (" + cmd + ") > out.txt 2>&1";
+        int rc = std::system(full.c_str());
+        ToolRun r;
+        r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);
+        std::ifstream in(dir / "out.txt");
+        std::stringstream ss;
+        ss << in.rdbuf();
+        r.out = ss.str();
+        return r;
+    }
+
+    void write(const std::string& name, const std::string& text)
+    {
+        std::ofstream(dir / name) << text;
+    }
+
+    fs::path dir;
+};
+
+const std::string texsyn_exe = TEXSYN_EXE;
+
+} // namespace
+
+TEST_F(Plugin, RecipeFromTheToolGivesTheToolsPixels)
+{
+    ASSERT_EQ(sh("'" + texsyn_exe
+                  + "' --seed 7 s.png --pyramid:size=80x64:iterations=2 -d float -o cli.exr "
+                    "--recipe r.texsyn")
+                  .status,
+        0);
+    ToolRun r = sh("oiiotool r.texsyn -d float -o plugin.exr && idiff -fail 0 cli.exr plugin.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    // And in sRGB, through the recipe's tocolorspace, against the tool's PNG.
+    ASSERT_EQ(sh("'" + texsyn_exe + "' --seed 7 s.png --pyramid:size=80x64:iterations=2 -o cli.png")
+                  .status,
+        0);
+    r = sh(
+        "oiiotool 'r.texsyn?tocolorspace=sRGB' -o plugin.png && idiff -fail 0 cli.png plugin.png");
+    EXPECT_EQ(r.status, 0) << r.out;
+}
+
+TEST_F(Plugin, SampleNamePlusRestArgumentsAndMetadata)
+{
+    ToolRun r = sh("iinfo -v 's.png.texsyn?size=96x40&seed=3&iterations=1'");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("96 x   40, 3 channel, float texsyn"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("synth:method: \"pyramid\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("synth:seed: 3"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("synth:sample: \"s.png\""), std::string::npos) << r.out;
+    r = sh("oiiotool 's.png.texsyn?size=96x40&seed=3&iterations=1' -o a.exr");
+    ASSERT_EQ(r.status, 0) << r.out;
+    OIIO::ImageBuf a((dir / "a.exr").string());
+    EXPECT_EQ(a.spec().width, 96);
+    EXPECT_EQ(a.spec().get_string_attribute("synth:options").find("size=96x40:iterations=1:"), 0u);
+}
+
+TEST_F(Plugin, RestArgumentsOverrideARecipeFile)
+{
+    write("r.texsyn", R"({ "sample": "s.png", "size": [48, 32], "seed": 1, "iterations": 1 })");
+    ToolRun r = sh("oiiotool r.texsyn -o a.exr && oiiotool 'r.texsyn?seed=9&size=40x40' -o b.exr");
+    ASSERT_EQ(r.status, 0) << r.out;
+    OIIO::ImageBuf a((dir / "a.exr").string()), b((dir / "b.exr").string());
+    EXPECT_EQ(a.spec().width, 48);
+    EXPECT_EQ(a.spec().get_int_attribute("synth:seed"), 1);
+    EXPECT_EQ(b.spec().width, 40);
+    EXPECT_EQ(b.spec().get_int_attribute("synth:seed"), 9);
+}
+
+TEST_F(Plugin, MaketxMakesATiledMipmappedTexture)
+{
+    write("m.texsyn", R"({ "sample": "s.png", "size": "128x128", "iterations": 1 })");
+    ToolRun r = sh("maketx m.texsyn -o m.tx && iinfo -v m.tx");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("MIP-map levels: 128x128 64x64 32x32"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("tile size: 64 x 64"), std::string::npos) << r.out;
+}
+
+// Every bad recipe fails with the plugin's message and exit status 1 — never a crash
+// (stock oiiotool 2.4.7 crashes for plugins that claim "procedural" and then fail open).
+TEST_F(Plugin, BadRecipesFailCleanly)
+{
+    write("malformed.texsyn", R"({ "sample": )");
+    write("unknown_key.texsyn", R"({ "sample": "s.png", "levels": 3 })");
+    write("unknown_method.texsyn", R"({ "sample": "s.png", "method": "quilting" })");
+    write("missing_sample.texsyn", R"({ "sample": "nope.png" })");
+    write("bad_value.texsyn", R"({ "sample": "s.png", "orientations": 99 })");
+    // A recipe FILE's error reaches every tool. For a name with REST arguments that is no
+    // file, stock oiiotool reports only "File does not exist"; iinfo (and Python) show the
+    // plugin's message.
+    struct Case {
+        std::string name, message, oiiotool_message;
+    };
+    const Case cases[] = {
+        { "malformed.texsyn", "malformed.texsyn: malformed JSON", "" },
+        { "unknown_key.texsyn", "unknown_key.texsyn: unknown key 'levels'", "" },
+        { "unknown_method.texsyn", "method=quilting is not one of pyramid", "" },
+        { "missing_sample.texsyn", "nope.png: no such file", "" },
+        { "bad_value.texsyn", "orientations=99 is out of range (1..8)", "" },
+        { "'s.png.texsyn?size=abc'", "size=abc is not a size", "File does not exist" },
+        { "'s.png.texsyn?bogus=1'", "unknown key 'bogus'", "File does not exist" },
+        { "'s.png.texsyn?subbands=1'", "subbands=1 is not available through the OIIO plugin",
+            "File does not exist" },
+        { "'s.png.texsyn?size=64x64&seed'", "malformed filename", "File does not exist" },
+    };
+    for (const Case& c : cases) {
+        for (bool oiiotool : { true, false }) {
+            std::string cmd = oiiotool ? "oiiotool " + c.name + " -o x.exr" : "iinfo " + c.name;
+            const std::string& expected
+                = oiiotool && !c.oiiotool_message.empty() ? c.oiiotool_message : c.message;
+            ToolRun r = sh(cmd);
+            EXPECT_EQ(r.status, 1) << cmd << "\n" << r.out; // 134/139 would be a crash
+            EXPECT_NE(r.out.find(expected), std::string::npos) << cmd << "\n" << r.out;
+        }
+        EXPECT_FALSE(fs::exists(dir / "x.exr"));
+    }
+}
+
+TEST_F(Plugin, PythonOpensARecipe)
+{
+    ToolRun r = sh("/usr/bin/python3 -c \"import OpenImageIO as oiio; "
+                   "b = oiio.ImageBuf('s.png.texsyn?size=24x16&iterations=1'); "
+                   "a = b.get_pixels(oiio.FLOAT); "
+                   "print(a.shape, b.spec().get_string_attribute('synth:method'))\"");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("(16, 24, 3) pyramid"), std::string::npos) << r.out;
+}
+
+TEST_F(Plugin, LibraryRecipesMatchTheFormatPlugin)
+{
+    // The C++ path (run_recipe) and the plugin agree; plugins load in-process too.
+    OIIO::attribute("plugin_searchpath", TEXSYN_PLUGIN_DIR);
+    const std::string name = (dir / "s.png.texsyn").string() + "?size=40x24&iterations=1";
+    OIIO::ImageBuf viaplugin(name);
+    ASSERT_TRUE(viaplugin.read(0, 0, true, OIIO::TypeFloat)) << viaplugin.geterror();
+    texsyn::Recipe recipe;
+    std::string error;
+    ASSERT_TRUE(texsyn::recipe_from_filename(name, recipe, error)) << error;
+    OIIO::ImageBuf direct;
+    ASSERT_TRUE(texsyn::run_recipe(recipe, direct, nullptr, error)) << error;
+    EXPECT_EQ(OIIO::ImageBufAlgo::computePixelHashSHA1(viaplugin),
+        OIIO::ImageBufAlgo::computePixelHashSHA1(direct));
+}
