@@ -179,10 +179,11 @@ bool ColorConfig::convert(PlanarImage& image, const std::string& from, const std
     std::vector<Plane> planes(image.channels.begin(), image.channels.begin() + nconv);
     std::string ocio_error;
     try {
-        OCIO::ConstCPUProcessorRcPtr cpu
-            = m_impl->config->getProcessor(src.c_str(), dst.c_str())
-                  ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                      OCIO::OPTIMIZATION_LOSSLESS);
+        // Lossless: no fast approximations of pow/log, so statistics see exact values.
+        OCIO::ConstProcessorRcPtr processor
+            = m_impl->config->getProcessor(src.c_str(), dst.c_str());
+        OCIO::ConstCPUProcessorRcPtr cpu = processor->getOptimizedCPUProcessor(
+            OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_LOSSLESS);
         ocio_error = nconv == 3 ? convert_rgb(cpu, planes[0], planes[1], planes[2], nthreads)
                                 : convert_grey(cpu, planes[0], nthreads);
     } catch (const std::exception& e) {
