@@ -3,6 +3,7 @@
 // bad-input case (exit code, first stderr line, no output written, input unchanged).
 #include <texsyn/color.h>
 #include <texsyn/io.h>
+#include <texsyn/recipe.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -496,4 +497,22 @@ TEST_F(Cli, VerboseOutputIntoAPipeHasNoProgressLines)
     CliRun r = texsyn("-v stucco.png --pyramid:size=32x32:iterations=1 -o out.exr");
     ASSERT_EQ(r.status, 0);
     EXPECT_EQ(r.err.find('\r'), std::string::npos);
+}
+
+TEST_F(Cli, RecipesAreWrittenForSynthesesOfFiles)
+{
+    CliRun r = texsyn("--seed 3 stucco.png --pyramid:size=40x30:iterations=1 --recipe r.texsyn");
+    ASSERT_EQ(r.status, 0) << r.err;
+    texsyn::Recipe recipe;
+    std::string error;
+    ASSERT_TRUE(texsyn::recipe_from_filename((dir / "r.texsyn").string(), recipe, error)) << error;
+    EXPECT_EQ(recipe.sample, (dir / "stucco.png").string());
+    EXPECT_EQ(recipe.pyramid.seed, 3u);
+    EXPECT_EQ(recipe.pyramid.width, 40);
+    expect_failure("stucco.png --recipe r2.texsyn",
+        "texsyn ERROR: --recipe r2.texsyn : the current image is not a synthesis of a sample "
+        "file (e.g. --pyramid)",
+        { "stucco.png", "r.texsyn" });
+    expect_failure("stucco.png --pyramid --recipe r2.json",
+        "texsyn ERROR: --recipe r2.json : name the recipe *.texsyn", { "stucco.png", "r.texsyn" });
 }

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Runs every texsyn / oiiotool / iinfo / exrinfo command line shown in ```sh blocks of a
-# Markdown file, in order, in a scratch directory with the sample files the docs name.
-# usage: run_doc_commands.sh TEXSYN_EXE REPO_DIR DOC.md WORK_DIR
+# Runs every texsyn / oiiotool / iinfo / exrinfo / maketx command line shown in ```sh blocks
+# of a Markdown file, in order, in a scratch directory with the sample files the docs name
+# and texsyn's OIIO plugin on OIIO_LIBRARY_PATH.
+# usage: run_doc_commands.sh TEXSYN_EXE PLUGIN_DIR REPO_DIR DOC.md WORK_DIR
 set -euo pipefail
-texsyn=$1 repo=$2 doc=$3 work=$4
+texsyn=$1 plugins=$2 repo=$3 doc=$4 work=$5
+export OIIO_LIBRARY_PATH="$plugins"
 rm -rf "$work" && mkdir -p "$work/bin"
 ln -s "$texsyn" "$work/bin/texsyn"
 export PATH="$work/bin:$PATH"
@@ -22,7 +24,7 @@ awk '
   /^```/   { inblock = 0; next }
   inblock {
     line = $0
-    if (cont != "") { cmd = cmd " " line } else if (line ~ /^(texsyn|oiiotool|iinfo|exrinfo) /) { cmd = line } else { next }
+    if (cont != "") { cmd = cmd " " line } else if (line ~ /^(texsyn|oiiotool|iinfo|exrinfo|maketx) /) { cmd = line } else { next }
     if (line ~ /\\$/) { sub(/\\$/, "", cmd); cont = 1; next }
     cont = ""; sub(/[ \t]+#.*$/, "", cmd); print cmd; cmd = ""
   }' "$doc" > commands.txt

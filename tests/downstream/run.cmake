@@ -9,7 +9,7 @@ if(rc)
   message(FATAL_ERROR "install failed: ${rc}")
 endif()
 foreach(f bin/texsyn include/texsyn/synthesis.h share/texsyn/ocio/config.ocio
-          lib/cmake/texsyn/texsynConfig.cmake)
+          lib/cmake/texsyn/texsynConfig.cmake lib/texsyn/plugins/texsyn.imageio.so)
   if(NOT EXISTS ${WORK_DIR}/prefix/${f})
     message(FATAL_ERROR "install is missing ${f}")
   endif()
@@ -31,4 +31,12 @@ endif()
 execute_process(COMMAND ${WORK_DIR}/prefix/bin/texsyn --version RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the installed texsyn does not run: ${rc}")
+endif()
+# The installed plugin, found through OIIO_LIBRARY_PATH as docs/recipes.md says.
+configure_file(${SOURCE_DIR}/../../data/samples/stucco_yellow.png ${WORK_DIR}/s.png COPYONLY)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env OCIO= OIIO_LIBRARY_PATH=${WORK_DIR}/prefix/lib/texsyn/plugins
+                        iinfo "${WORK_DIR}/s.png.texsyn?size=32x32&iterations=1"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(rc OR NOT out MATCHES "32 x   32, 3 channel, float texsyn")
+  message(FATAL_ERROR "the installed plugin does not open a recipe: ${rc} ${out}")
 endif()
