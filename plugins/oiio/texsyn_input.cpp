@@ -6,7 +6,10 @@
 // The plugin does not claim "procedural": stock oiiotool 2.4.7 crashes when a procedural
 // plugin accepts a name in valid_file() and then fails open() (../shared/ECOSYSTEM.md §2).
 // Without it, a bad recipe fails cleanly with the plugin's message.
+#include <deque>
 #include <filesystem>
+#include <memory>
+#include <mutex>
 
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
@@ -50,34 +53,66 @@ public:
                 name.substr(0, name.find('?')));
             return false;
         }
-        if (!texsyn::run_recipe(recipe, m_image, nullptr, error)) {
+        m_image = cached_synthesis(name, recipe, error);
+        if (!m_image) {
             errorfmt("{}", error);
             return false;
         }
-        m_spec = m_image.spec();
+        m_spec = m_image->spec();
         newspec = m_spec;
         return true;
     }
 
     bool close() override
     {
-        m_image.clear();
+        m_image.reset();
         return true;
     }
 
-    // The image is complete in memory and never changes after open(): rows can be served
-    // from any thread.
+    // The image is complete in memory and never changes: rows can be served from any thread.
     bool read_native_scanline(int subimage, int miplevel, int y, int z, void* data) override
     {
-        if (subimage != 0 || miplevel != 0 || !m_image.initialized())
+        if (subimage != 0 || miplevel != 0 || !m_image)
             return false;
-        const ImageSpec& spec = m_image.spec();
-        return m_image.get_pixels(
+        const ImageSpec& spec = m_image->spec();
+        return m_image->get_pixels(
             ROI(spec.x, spec.x + spec.width, y, y + 1, z, z + 1), TypeFloat, data);
     }
 
 private:
-    ImageBuf m_image; // the synthesis, made by open()
+    // OIIO tools open a file more than once (oiiotool: for its spec, then for its pixels),
+    // and a synthesis is expensive, so the last few results are kept, keyed by the name as
+    // given, the working directory (for relative paths) and the modification times of the
+    // recipe file and the sample (so edits are seen).
+    static std::shared_ptr<const ImageBuf> cached_synthesis(
+        const std::string& name, const texsyn::Recipe& recipe, std::string& error)
+    {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        auto stamp = [&](const std::string& path) {
+            return std::to_string(fs::last_write_time(path, ec).time_since_epoch().count());
+        };
+        const std::string key = name + "|" + fs::current_path(ec).string() + "|"
+            + stamp(name.substr(0, name.find('?'))) + "|" + stamp(recipe.sample);
+        static std::mutex mutex;
+        static std::deque<std::pair<std::string, std::shared_ptr<const ImageBuf>>> cache;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            for (auto& entry : cache)
+                if (entry.first == key)
+                    return entry.second;
+        }
+        auto result = std::make_shared<ImageBuf>();
+        if (!texsyn::run_recipe(recipe, *result, nullptr, error))
+            return nullptr;
+        std::lock_guard<std::mutex> lock(mutex);
+        cache.emplace_back(key, result);
+        if (cache.size() > 2)
+            cache.pop_front();
+        return result;
+    }
+
+    std::shared_ptr<const ImageBuf> m_image; // the synthesis, made or found by open()
 };
 
 OIIO_PLUGIN_NAMESPACE_END
