@@ -16,6 +16,7 @@ cp "$repo/data/samples/rust.png" rust.png
 cp "$repo/data/samples/marble_pink.png" marble.png
 cp "$repo/ocio-configs/config.ocio" studio.ocio
 oiiotool "$repo/data/samples/stucco_yellow.png" -d uint16 -o scan.tif
+mkdir -p build && ln -s "$plugins" build/plugins  # the README's build-tree plugin path
 
 # Extract the commands: inside ```sh fences, lines starting with a tool name, joined with
 # their backslash continuations.
@@ -24,7 +25,7 @@ awk '
   /^```/   { inblock = 0; next }
   inblock {
     line = $0
-    if (cont != "") { cmd = cmd " " line } else if (line ~ /^(texsyn|oiiotool|iinfo|exrinfo|maketx) /) { cmd = line } else { next }
+    if (cont != "") { cmd = cmd " " line } else if (line ~ /^([A-Z_]+=[^ ]+ )*(texsyn|oiiotool|iinfo|exrinfo|maketx) /) { cmd = line } else { next }
     if (line ~ /\\$/) { sub(/\\$/, "", cmd); cont = 1; next }
     cont = ""; sub(/[ \t]+#.*$/, "", cmd); print cmd; cmd = ""
   }' "$doc" > commands.txt
