@@ -19,7 +19,7 @@ time_runs() {
     t0=$(date +%s.%N)
     "$@" > /dev/null
     t1=$(date +%s.%N)
-    echo "$t1 - $t0" | bc
+    awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f\n", b - a }'
   done | median
 }
 cli=$(time_runs "$build/oiiotool-ext/texsyn" --threads 2 --seed 1 rust.png \
@@ -28,4 +28,4 @@ plugin=$(time_runs oiiotool --threads 2 "rust.png.texsyn?size=1024x1024&seed=1" 
 idiff -fail 0 cli.exr plugin.exr > /dev/null || { echo "outputs differ"; exit 1; }
 echo "texsyn CLI  median ${cli} s"
 echo "oiiotool    median ${plugin} s"
-echo "overhead    $(echo "scale=1; 100 * ($plugin - $cli) / $cli" | bc) %"
+awk -v c="$cli" -v p="$plugin" 'BEGIN { printf "overhead    %.1f %%\n", 100 * (p - c) / c }'
