@@ -19,21 +19,21 @@ namespace texsyn::cli {
 void push_input(CliState& state, const std::string& filename)
 {
     StackImage img;
+    OIIO::ImageSpec native;
     std::string error;
     bool ok;
     {
         QuietStderr quiet;
-        ok = read_image(filename, img.file_pixels, error);
+        ok = read_image(filename, img.file_pixels, error, &native);
     }
     if (!ok)
         throw CliError(error);
     img.source = filename;
-    img.input_format = img.file_pixels.nativespec().format;
+    img.input_format = native.format;
     img.output_colorspace = state.pending_tocolorspace;
     state.stack.push_back(std::move(img));
-    std::string space = state.pending_iscolorspace.empty()
-        ? state.colors().guess_colorspace(state.stack.back().file_pixels.nativespec())
-        : state.pending_iscolorspace;
+    std::string space = state.pending_iscolorspace.empty() ? state.colors().guess_colorspace(native)
+                                                           : state.pending_iscolorspace;
     state.pending_iscolorspace.clear();
     reinterpret_input(state, space);
 }

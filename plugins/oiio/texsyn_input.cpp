@@ -5,7 +5,10 @@
 //
 // The plugin does not claim "procedural": stock oiiotool 2.4.7 crashes when a procedural
 // plugin accepts a name in valid_file() and then fails open() (../shared/ECOSYSTEM.md §2).
-// Without it, a bad recipe fails cleanly with the plugin's message.
+// Without it, a bad recipe fails cleanly with the plugin's message. Samples are read with
+// their own ImageInput (texsyn::read_image): re-entering OIIO's shared ImageCache while it
+// opens this file made oiiotool abort.
+#include <algorithm>
 #include <deque>
 #include <filesystem>
 #include <memory>
@@ -44,38 +47,44 @@ public:
             errorfmt("{}", error);
             return false;
         }
-        if (recipe.subbands) {
-            // TODO: serve subbands as further subimages once stock oiiotool 2.4 can read
-            // them: its image cache aborts (refcnt.h "Assertion 'm_ptr' failed") on this
-            // plugin's multi-subimage files, while iinfo and Python read them fine.
-            errorfmt("{}: subbands=1 is not available through the OIIO plugin (stock "
-                     "oiiotool 2.4 cannot read them); use texsyn --subbands",
-                name.substr(0, name.find('?')));
-            return false;
-        }
-        m_image = cached_synthesis(name, recipe, error);
-        if (!m_image) {
+        m_images = cached_synthesis(name, recipe, error);
+        if (!m_images) {
             errorfmt("{}", error);
             return false;
         }
-        m_spec = m_image->spec();
+        m_subimage = 0;
+        m_spec = (*m_images)[0].spec();
         newspec = m_spec;
         return true;
     }
 
     bool close() override
     {
-        m_image.reset();
+        m_images.reset();
+        m_subimage = 0;
         return true;
     }
 
-    // The image is complete in memory and never changes: rows can be served from any thread.
+    int current_subimage() const override { return m_subimage; }
+
+    bool seek_subimage(int subimage, int miplevel) override
+    {
+        if (!m_images || subimage < 0 || subimage >= int(m_images->size()) || miplevel != 0)
+            return false;
+        m_subimage = subimage;
+        m_spec = (*m_images)[size_t(subimage)].spec();
+        return true;
+    }
+
+    // The images are complete in memory and never change: rows of any subimage can be
+    // served without seeking, from any thread.
     bool read_native_scanline(int subimage, int miplevel, int y, int z, void* data) override
     {
-        if (subimage != 0 || miplevel != 0 || !m_image)
+        if (!m_images || subimage < 0 || subimage >= int(m_images->size()) || miplevel != 0)
             return false;
-        const ImageSpec& spec = m_image->spec();
-        return m_image->get_pixels(
+        const ImageBuf& img = (*m_images)[size_t(subimage)];
+        const ImageSpec& spec = img.spec();
+        return img.get_pixels(
             ROI(spec.x, spec.x + spec.width, y, y + 1, z, z + 1), TypeFloat, data);
     }
 
@@ -84,7 +93,9 @@ private:
     // and a synthesis is expensive, so the last few results are kept, keyed by the name as
     // given, the working directory (for relative paths) and the modification times of the
     // recipe file and the sample (so edits are seen).
-    static std::shared_ptr<const ImageBuf> cached_synthesis(
+    using Images = std::vector<ImageBuf>; // 0: the synthesis; then its subbands if asked for
+
+    static std::shared_ptr<const Images> cached_synthesis(
         const std::string& name, const texsyn::Recipe& recipe, std::string& error)
     {
         namespace fs = std::filesystem;
@@ -95,24 +106,46 @@ private:
         const std::string key = name + "|" + fs::current_path(ec).string() + "|"
             + stamp(name.substr(0, name.find('?'))) + "|" + stamp(recipe.sample);
         static std::mutex mutex;
-        static std::deque<std::pair<std::string, std::shared_ptr<const ImageBuf>>> cache;
+        static std::deque<std::pair<std::string, std::shared_ptr<const Images>>> cache;
         {
             std::lock_guard<std::mutex> lock(mutex);
             for (auto& entry : cache)
                 if (entry.first == key)
                     return entry.second;
         }
-        auto result = std::make_shared<ImageBuf>();
-        if (!texsyn::run_recipe(recipe, *result, nullptr, error))
+        auto images = std::make_shared<Images>(1);
+        std::vector<texsyn::NamedImage> bands;
+        if (!texsyn::run_recipe(recipe, (*images)[0], &bands, error))
             return nullptr;
+        (*images)[0].specmod().attribute("oiio:subimagename", "synth");
+        for (texsyn::NamedImage& band : bands) {
+            ImageBuf buf;
+            texsyn::imagebuf_from_planes(band.image, buf);
+            buf.specmod().attribute("oiio:subimagename", band.name);
+            for (const ParamValue& p : (*images)[0].spec().extra_attribs)
+                if (Strutil::starts_with(p.name(), "synth:"))
+                    buf.specmod().attribute(p.name(), p.type(), p.data());
+            images->push_back(std::move(buf));
+        }
+        // One display window for all parts, so that they can be written as one OpenEXR.
+        int full_w = 0, full_h = 0;
+        for (const ImageBuf& img : *images) {
+            full_w = std::max(full_w, img.spec().width);
+            full_h = std::max(full_h, img.spec().height);
+        }
+        for (ImageBuf& img : *images) {
+            img.specmod().full_width = full_w;
+            img.specmod().full_height = full_h;
+        }
         std::lock_guard<std::mutex> lock(mutex);
-        cache.emplace_back(key, result);
+        cache.emplace_back(key, images);
         if (cache.size() > 2)
             cache.pop_front();
-        return result;
+        return images;
     }
 
-    std::shared_ptr<const ImageBuf> m_image; // the synthesis, made or found by open()
+    std::shared_ptr<const Images> m_images; // made or found by open()
+    int m_subimage = 0;
 };
 
 OIIO_PLUGIN_NAMESPACE_END

@@ -104,6 +104,13 @@ protected:
         return buf;
     }
 
+    // The pixel type stored in the file.
+    OIIO::TypeDesc file_type(const std::string& name)
+    {
+        auto in = OIIO::ImageInput::open((dir / name).string());
+        return in ? in->spec().format : OIIO::TypeUnknown;
+    }
+
     void write_sample(
         const std::string& name, int nchannels, OIIO::TypeDesc type, float special = 0.0f)
     {
@@ -138,7 +145,7 @@ TEST_F(Cli, SynthesizesAnExrWithMetadata)
     EXPECT_EQ(s.get_int_attribute("synth:seed"), 0);
     EXPECT_NE(s.get_string_attribute("synth:version"), "");
     EXPECT_EQ(s.get_string_attribute("synth:options").find("size=96x64:iterations=1:"), 0u);
-    EXPECT_EQ(out.nativespec().format, OIIO::TypeHalf);
+    EXPECT_EQ(file_type("out.exr"), OIIO::TypeHalf);
 }
 
 TEST_F(Cli, StatisticsAreTakenInSceneLinear)
@@ -176,7 +183,7 @@ TEST_F(Cli, IntegerOutputsAreInTheInputsSpace)
     auto out = OIIO::ImageBufAlgo::computePixelStats(read("out.png"));
     for (int c = 0; c < 3; ++c) // 8-bit quantisation and rounding: within 2 code values
         EXPECT_NEAR(out.avg[c], in.avg[c], 2.0 / 255.0) << c;
-    EXPECT_EQ(read("out.png").nativespec().format, OIIO::TypeUInt8);
+    EXPECT_EQ(file_type("out.png"), OIIO::TypeUInt8);
 }
 
 TEST_F(Cli, ColourSpaceOptionsBehaveAsInOiiotool)
@@ -307,8 +314,7 @@ TEST_F(Cli, BadFilesAreRefused)
     expect_failure("missing.png --pyramid -o out.exr", "texsyn ERROR: missing.png: no such file");
     std::ofstream(dir / "notes.png") << "this is not a PNG file\n";
     expect_failure("notes.png --pyramid -o out.exr",
-        "texsyn ERROR: notes.png: cannot read image (Invalid image file \"notes.png\": Not a "
-        "PNG file)",
+        "texsyn ERROR: notes.png: cannot read image (Not a PNG file)",
         { "stucco.png", "notes.png" });
     std::string png = slurp(dir / "stucco.png");
     std::ofstream(dir / "cut.png", std::ios::binary)
@@ -448,9 +454,9 @@ TEST_F(Cli, PixelTypesFollowTheInputAndTheFormat)
     std::string cmd = "cd " + quote(dir.string()) + " && oiiotool stucco.png -d uint16 -o s16.png";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     ASSERT_EQ(texsyn("s16.png --pyramid:size=32x32:iterations=1 -o o16.png").status, 0);
-    EXPECT_EQ(read("o16.png").nativespec().format, OIIO::TypeUInt16);
+    EXPECT_EQ(file_type("o16.png"), OIIO::TypeUInt16);
     ASSERT_EQ(texsyn("s16.png --pyramid:size=32x32:iterations=1 -o o16.tif").status, 0);
-    EXPECT_EQ(read("o16.tif").nativespec().format, OIIO::TypeUInt16);
+    EXPECT_EQ(file_type("o16.tif"), OIIO::TypeUInt16);
     // The description carries the recipe where a format drops unknown attributes.
     EXPECT_NE(read("o16.tif")
                   .spec()

@@ -9,11 +9,14 @@
 
 namespace texsyn {
 
-/// Reads the first subimage of `filename` completely, converting pixels to float, with
-/// colour left un-associated from alpha where the file stores it so (the spec then says
-/// "oiio:UnassociatedAlpha"). Fails (false, "FILE: reason") if the file is missing,
-/// unreadable, truncated or not an image.
-bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error);
+/// Reads the first subimage of `filename` completely into a float ImageBuf (its metadata
+/// included), with colour left un-associated from alpha where the file stores it so (the
+/// spec then says "oiio:UnassociatedAlpha"). Reads with its own ImageInput, never through
+/// OIIO's shared ImageCache, so it is safe inside an OIIO format plugin. If `native` is not
+/// null it receives the file's own spec (pixel type included). Fails (false, "FILE:
+/// reason") if the file is missing, unreadable, truncated or not an image.
+bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error,
+    OIIO::ImageSpec* native = nullptr);
 
 /// A path in the same directory as `filename`, with the same extension (so OIIO picks the
 /// same format), that does not exist yet: write there, then commit_file().

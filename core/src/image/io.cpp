@@ -14,7 +14,8 @@ namespace texsyn {
 
 namespace fs = std::filesystem;
 
-bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error)
+bool read_image(
+    const std::string& filename, OIIO::ImageBuf& dst, std::string& error, OIIO::ImageSpec* native)
 {
     std::error_code ec;
     if (!fs::exists(filename, ec)) {
@@ -25,14 +26,14 @@ bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& e
         error = filename + ": is a directory, not an image";
         return false;
     }
-    // Ask for un-associated colour where the file stores it that way (PNG, most TIFF):
-    // OIIO would otherwise premultiply 8-bit values, losing colour under low alpha.
+    // Read with an ImageInput of our own, not through OIIO's shared ImageCache: texsyn runs
+    // inside OIIO tools (as their format plugin), whose cache must not be re-entered while
+    // it is opening the recipe. Ask for un-associated colour where the file stores it that
+    // way (PNG, most TIFF): OIIO would otherwise premultiply 8-bit values, losing colour
+    // under low alpha.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    OIIO::ImageBuf buf(filename, 0, 0, nullptr, &config);
-    // force=true reads all pixels now, so truncation is found here and not mid-synthesis.
-    if (!buf.read(0, 0, true, OIIO::TypeFloat)) {
-        std::string msg = buf.geterror();
+    auto fail = [&](std::string msg) {
         if (msg.empty())
             msg = OIIO::geterror();
         error = filename + ": cannot read image" + (msg.empty() ? "" : " (" + msg + ")");
@@ -41,7 +42,19 @@ bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& e
             if (c == '\n')
                 c = ' ';
         return false;
-    }
+    };
+    auto in = OIIO::ImageInput::open(filename, &config);
+    if (!in)
+        return fail(OIIO::geterror());
+    OIIO::ImageSpec spec = in->spec();
+    spec.format = OIIO::TypeFloat;
+    spec.channelformats.clear();
+    OIIO::ImageBuf buf(spec);
+    // All pixels now, so truncation is found here and not mid-synthesis.
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, buf.localpixels()))
+        return fail(in->geterror());
+    if (native)
+        *native = in->spec();
     dst = std::move(buf);
     return true;
 }

@@ -16,11 +16,11 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
     if (!colors)
         return false;
     OIIO::ImageBuf file;
-    if (!read_image(recipe.sample, file, error))
+    OIIO::ImageSpec native;
+    if (!read_image(recipe.sample, file, error, &native))
         return false;
-    const std::string from = recipe.iscolorspace.empty()
-        ? colors->guess_colorspace(file.nativespec())
-        : colors->resolve(recipe.iscolorspace);
+    const std::string from = recipe.iscolorspace.empty() ? colors->guess_colorspace(native)
+                                                         : colors->resolve(recipe.iscolorspace);
     const std::string to = recipe.tocolorspace.empty() ? colors->scene_linear()
                                                        : colors->resolve(recipe.tocolorspace);
     for (const std::string* name : { &recipe.iscolorspace, &recipe.tocolorspace })
