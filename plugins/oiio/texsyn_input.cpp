@@ -90,9 +90,9 @@ public:
 
 private:
     // OIIO tools open a file more than once (oiiotool: for its spec, then for its pixels),
-    // and a synthesis is expensive, so the last few results are kept, keyed by the name as
-    // given, the working directory (for relative paths) and the modification times of the
-    // recipe file and the sample (so edits are seen).
+    // and a synthesis is expensive, so the last two results are kept, keyed by the name as
+    // given, the working directory (for relative paths) and the modification times and
+    // sizes of the recipe file, the sample and the colour config (so edits are seen).
     using Images = std::vector<ImageBuf>; // 0: the synthesis; then its subbands if asked for
 
     static std::shared_ptr<const Images> cached_synthesis(
@@ -101,13 +101,19 @@ private:
         namespace fs = std::filesystem;
         std::error_code ec;
         auto stamp = [&](const std::string& path) {
-            return std::to_string(fs::last_write_time(path, ec).time_since_epoch().count());
+            if (path.empty())
+                return std::string("-");
+            return std::to_string(fs::last_write_time(path, ec).time_since_epoch().count()) + ":"
+                + std::to_string(fs::file_size(path, ec));
         };
         const std::string key = name + "|" + fs::current_path(ec).string() + "|"
-            + stamp(name.substr(0, name.find('?'))) + "|" + stamp(recipe.sample);
+            + stamp(name.substr(0, name.find('?'))) + "|" + stamp(recipe.sample) + "|"
+            + stamp(recipe.colorconfig);
+        // A recipe whose sample is a recipe depends on files this key does not see.
+        const bool cacheable = !Strutil::iends_with(recipe.sample, ".texsyn");
         static std::mutex mutex;
         static std::deque<std::pair<std::string, std::shared_ptr<const Images>>> cache;
-        {
+        if (cacheable) {
             std::lock_guard<std::mutex> lock(mutex);
             for (auto& entry : cache)
                 if (entry.first == key)
@@ -137,6 +143,8 @@ private:
             img.specmod().full_width = full_w;
             img.specmod().full_height = full_h;
         }
+        if (!cacheable)
+            return images;
         std::lock_guard<std::mutex> lock(mutex);
         cache.emplace_back(key, images);
         if (cache.size() > 2)

@@ -142,6 +142,9 @@ TEST_F(Plugin, BadRecipesFailCleanly)
     write("unknown_method.texsyn", R"({ "sample": "s.png", "method": "quilting" })");
     write("missing_sample.texsyn", R"({ "sample": "nope.png" })");
     write("bad_value.texsyn", R"({ "sample": "s.png", "orientations": 99 })");
+    write("self.texsyn", R"({ "sample": "self.texsyn", "size": "16x16" })");
+    write("loop_a.texsyn", R"({ "sample": "loop_b.texsyn", "size": "16x16" })");
+    write("loop_b.texsyn", R"({ "sample": "loop_a.texsyn", "size": "16x16" })");
     // A recipe FILE's error reaches every tool. For a name with REST arguments that is no
     // file, stock oiiotool reports only "File does not exist"; iinfo (and Python) show the
     // plugin's message.
@@ -154,6 +157,8 @@ TEST_F(Plugin, BadRecipesFailCleanly)
         { "unknown_method.texsyn", "method=quilting is not one of pyramid", "" },
         { "missing_sample.texsyn", "nope.png: no such file", "" },
         { "bad_value.texsyn", "orientations=99 is out of range (1..8)", "" },
+        { "self.texsyn", "self.texsyn: the recipe uses itself as its sample", "" },
+        { "loop_a.texsyn", "recipes nest more than 8 deep", "" },
         { "'s.png.texsyn?size=abc'", "size=abc is not a size", "File does not exist" },
         { "'s.png.texsyn?bogus=1'", "unknown key 'bogus'", "File does not exist" },
         { "'s.png.texsyn?size=64x64&seed'", "malformed filename", "File does not exist" },

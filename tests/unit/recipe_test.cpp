@@ -59,6 +59,13 @@ TEST(Recipe, RejectsBadRecipesNamingTheProblem)
     EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "size": 3.5 })", "", r, error));
     EXPECT_EQ(error.find("size: expected a string"), 0u) << error;
     EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "subbands": "maybe" })", "", r, error));
+    EXPECT_FALSE(parse_recipe(R"({ "sample": 5 })", "", r, error));
+    EXPECT_EQ(error, "sample: expected a string, not 5");
+    EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "seed": true })", "", r, error));
+    EXPECT_EQ(error, "seed: expected a number or a string, not true");
+    EXPECT_FALSE(
+        parse_recipe(R"({ "sample": "a.png", "seed": 18446744073709551615 })", "", r, error));
+    EXPECT_EQ(error, "seed=18446744073709551615 is not an integer");
 }
 
 TEST(Recipe, RestArgumentsOverrideFields)
@@ -66,14 +73,20 @@ TEST(Recipe, RestArgumentsOverrideFields)
     Recipe r;
     r.sample = "a.png";
     std::string error;
-    ASSERT_TRUE(apply_recipe_arguments("seed=9&size=32x16&tocolorspace=sRGB", r, error)) << error;
+    ASSERT_TRUE(
+        apply_recipe_arguments("seed=9&size=32x16&tocolorspace=sRGB%20-%20Texture", "", r, error))
+        << error;
     EXPECT_EQ(r.pyramid.seed, 9u);
     EXPECT_EQ(r.pyramid.width, 32);
-    EXPECT_EQ(r.tocolorspace, "sRGB");
+    EXPECT_EQ(r.tocolorspace, "sRGB - Texture");
     Recipe unchanged = r;
-    EXPECT_FALSE(apply_recipe_arguments("seed=1&size", r, error));
+    EXPECT_FALSE(apply_recipe_arguments("seed=1&size", "", r, error));
     EXPECT_EQ(error, "malformed argument 'size' (expected name=value)");
     EXPECT_EQ(r.pyramid.seed, unchanged.pyramid.seed); // nothing applied on failure
+    EXPECT_FALSE(apply_recipe_arguments("size=8x8&size=16x16", "", r, error));
+    EXPECT_EQ(error, "size is given twice");
+    ASSERT_TRUE(apply_recipe_arguments("sample=other.png", "/shows/a", r, error)) << error;
+    EXPECT_EQ(r.sample, "/shows/a/other.png");
 }
 
 TEST(Recipe, FileNamesNameARecipeFileOrASample)
@@ -110,6 +123,9 @@ TEST(Recipe, WrittenRecipesReadBackToTheSameRecipe)
     r.iscolorspace = "sRGB - Texture";
     const std::string json = recipe_to_json(r, "/shows/a");
     EXPECT_NE(json.find("\"sample\": \"maps/rust.png\""), std::string::npos) << json;
+    // Outside the recipe's folder: relative all the same, and normalised.
+    const std::string moved = recipe_to_json(r, "/shows/b/x/../recipes");
+    EXPECT_NE(moved.find("\"sample\": \"../../a/maps/rust.png\""), std::string::npos) << moved;
     Recipe back;
     std::string error;
     ASSERT_TRUE(parse_recipe(json, "/shows/a", back, error)) << error;

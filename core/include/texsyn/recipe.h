@@ -39,9 +39,12 @@ constexpr int recipe_version = 1;
 bool parse_recipe(
     const std::string& text, const std::string& base_dir, Recipe& recipe, std::string& error);
 
-/// Applies REST-style arguments "name=value&name=value" (the same keys as the JSON) on top
-/// of `recipe`. Fails (false, `error`) on a piece without '=', an unknown key or a bad value.
-bool apply_recipe_arguments(const std::string& arguments, Recipe& recipe, std::string& error);
+/// Applies REST-style arguments "name=value&name=value" (the same keys as the JSON,
+/// %-escapes decoded) on top of `recipe`; relative paths are resolved against `base_dir`.
+/// Fails (false, `error`; `recipe` unchanged) on a piece without '=', a repeated or unknown
+/// key, or a bad value.
+bool apply_recipe_arguments(
+    const std::string& arguments, const std::string& base_dir, Recipe& recipe, std::string& error);
 
 /// The recipe named by an OIIO file name as the plugin receives it: "x.texsyn" (a JSON
 /// file), "sample.png.texsyn" (no such file: the sample is "sample.png"), either followed

@@ -2,6 +2,9 @@
 // Recipe JSON and REST arguments: one setter per key serves both.
 #include <texsyn/recipe.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -96,8 +99,22 @@ bool set_key(Recipe& r, const std::string& key, const std::string& value,
 bool json_text(
     const std::string& key, const nlohmann::json& v, std::string& out, std::string& error)
 {
+    static const char* const string_keys[]
+        = { "sample", "method", "iscolorspace", "tocolorspace", "colorconfig" };
+    const bool is_string_key
+        = std::find(std::begin(string_keys), std::end(string_keys), key) != std::end(string_keys);
+    if (is_string_key && !v.is_string()) {
+        error = key + ": expected a string, not " + v.dump();
+        return false;
+    }
+    if (v.is_boolean() && key != "subbands") {
+        error = key + ": expected a number or a string, not " + v.dump();
+        return false;
+    }
     if (v.is_string())
         out = v.get<std::string>();
+    else if (v.is_number_unsigned() && v.get<uint64_t>() > uint64_t(INT64_MAX))
+        out = std::to_string(v.get<uint64_t>());
     else if (v.is_number_integer())
         out = std::to_string(v.get<int64_t>());
     else if (v.is_boolean())
@@ -110,6 +127,22 @@ bool json_text(
         return false;
     }
     return true;
+}
+
+// "%20" -> " ": REST values as URLs write them (a malformed escape is kept as it is).
+std::string percent_decode(const std::string& text)
+{
+    std::string out;
+    for (size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '%' && i + 2 < text.size() && std::isxdigit((unsigned char)text[i + 1])
+            && std::isxdigit((unsigned char)text[i + 2])) {
+            out += char(std::stoi(text.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            out += text[i];
+        }
+    }
+    return out;
 }
 
 } // namespace
@@ -143,16 +176,24 @@ bool parse_recipe(
     return true;
 }
 
-bool apply_recipe_arguments(const std::string& arguments, Recipe& recipe, std::string& error)
+bool apply_recipe_arguments(
+    const std::string& arguments, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
     Recipe r = recipe;
+    std::vector<std::string> seen;
     for (const std::string& piece : OIIO::Strutil::splits(arguments, "&")) {
         size_t eq = piece.find('=');
         if (eq == std::string::npos || eq == 0) {
             error = "malformed argument '" + piece + "' (expected name=value)";
             return false;
         }
-        if (!set_key(r, piece.substr(0, eq), piece.substr(eq + 1), "", error))
+        const std::string key = piece.substr(0, eq);
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+            error = key + " is given twice";
+            return false;
+        }
+        seen.push_back(key);
+        if (!set_key(r, key, percent_decode(piece.substr(eq + 1)), base_dir, error))
             return false;
     }
     recipe = std::move(r);
@@ -169,23 +210,33 @@ bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& 
     }
     Recipe r;
     std::error_code ec;
+    std::string base_dir;
+    if (fs::is_directory(base, ec)) {
+        error = base + ": is a directory, not a recipe";
+        return false;
+    }
     if (fs::is_regular_file(base, ec)) {
+        base_dir = fs::path(base).parent_path().string();
         std::ifstream in(base, std::ios::binary);
         std::stringstream text;
         text << in.rdbuf();
-        if (!in || !parse_recipe(text.str(), fs::path(base).parent_path().string(), r, error)) {
+        if (!in || !parse_recipe(text.str(), base_dir, r, error)) {
             error = base + ": " + (error.empty() ? "cannot read" : error);
             return false;
         }
     } else {
         r.sample = base.substr(0, base.size() - 7); // "rust.png.texsyn" -> "rust.png"
     }
-    if (q != std::string::npos && !apply_recipe_arguments(name.substr(q + 1), r, error)) {
+    if (q != std::string::npos && !apply_recipe_arguments(name.substr(q + 1), base_dir, r, error)) {
         error = base + ": " + error;
         return false;
     }
     if (!r.pyramid.validate(error)) {
         error = base + ": " + error;
+        return false;
+    }
+    if (fs::equivalent(r.sample, base, ec)) {
+        error = base + ": the recipe uses itself as its sample";
         return false;
     }
     recipe = std::move(r);
@@ -197,10 +248,11 @@ std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir)
     auto relative = [&](const std::string& path) {
         if (path.empty() || base_dir.empty())
             return path;
+        // Relative even across "..", so that a project folder can move as a whole.
         std::error_code ec;
-        fs::path rel = fs::relative(fs::absolute(path, ec), fs::absolute(base_dir, ec), ec);
-        return ec || rel.empty() || *rel.begin() == ".." ? fs::absolute(path, ec).string()
-                                                         : rel.string();
+        const fs::path abs = fs::absolute(path, ec).lexically_normal();
+        const fs::path rel = abs.lexically_relative(fs::absolute(base_dir, ec).lexically_normal());
+        return ec || rel.empty() ? abs.string() : rel.string();
     };
     nlohmann::ordered_json j;
     j["texsyn_recipe"] = recipe_version;

@@ -3,15 +3,39 @@
 #include <texsyn/recipe.h>
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/strutil.h>
 
 #include <texsyn/color.h>
 #include <texsyn/io.h>
 
 namespace texsyn {
 
+namespace {
+
+// A recipe's sample may itself be a recipe (read through the OIIO plugin, on this thread);
+// this bounds the nesting so that a recipe that refers to itself fails instead of
+// recursing until the stack overflows.
+thread_local int recipe_depth = 0;
+constexpr int max_recipe_depth = 8;
+
+struct DepthGuard {
+    DepthGuard() { ++recipe_depth; }
+    ~DepthGuard() { --recipe_depth; }
+    DepthGuard(const DepthGuard&) = delete;
+    DepthGuard& operator=(const DepthGuard&) = delete;
+};
+
+} // namespace
+
 bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImage>* subbands,
     std::string& error)
 {
+    DepthGuard depth;
+    if (recipe_depth > max_recipe_depth) {
+        error = recipe.sample + ": recipes nest more than " + std::to_string(max_recipe_depth)
+            + " deep (does a recipe use itself as its sample?)";
+        return false;
+    }
     auto colors = ColorConfig::load(recipe.colorconfig, error);
     if (!colors)
         return false;
@@ -23,9 +47,11 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
                                                          : colors->resolve(recipe.iscolorspace);
     const std::string to = recipe.tocolorspace.empty() ? colors->scene_linear()
                                                        : colors->resolve(recipe.tocolorspace);
-    for (const std::string* name : { &recipe.iscolorspace, &recipe.tocolorspace })
+    for (auto [key, name] : { std::pair { "iscolorspace", &recipe.iscolorspace },
+             std::pair { "tocolorspace", &recipe.tocolorspace } })
         if (!name->empty() && colors->resolve(*name).empty()) {
-            error = "unknown colour space '" + *name + "'";
+            error = std::string(key) + "=" + *name + ": unknown colour space (known: "
+                + OIIO::Strutil::join(colors->colorspace_names(), ", ") + ")";
             return false;
         }
     OIIO::ImageBuf sample, synth;
