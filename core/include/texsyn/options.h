@@ -21,6 +21,12 @@ bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, 
 bool parse_size_option(std::string_view name, std::string_view text, int hi, int& width,
     int& height, std::string& error);
 
+/// Parses "a,b,c": 1..max_count decimal numbers, each in [lo, hi].
+bool parse_number_list_option(std::string_view name, std::string_view text, float lo, float hi,
+    size_t max_count, std::vector<float>& values, std::string& error);
+/// "a,b,c" with the shortest text that reads back as the same floats.
+std::string format_number_list(const std::vector<float>& values);
+
 /// One option of an options struct T.
 template <class T>
 struct OptionField {
@@ -66,6 +72,24 @@ public:
                 return parse_size_option(nm, v, hi, t.*w, t.*h, err);
             },
             [=](const T& t) { return std::to_string(t.*w) + "x" + std::to_string(t.*h); } });
+        return *this;
+    }
+    /// A list of up to `max_count` numbers in [lo, hi], written "a,b,c"; an empty list
+    /// (the default) is written as `empty_text`, which must parse to an equivalent list.
+    OptionTable& numbers(const char* name, std::vector<float> T::*member, float lo, float hi,
+        size_t max_count, const char* empty_text, const char* help)
+    {
+        std::string nm = name;
+        std::string empty = empty_text;
+        m_fields.push_back({ nm, help,
+            "up to " + std::to_string(max_count) + " numbers " + format_number_list({ lo }) + ".."
+                + format_number_list({ hi }) + ", comma-separated",
+            [=](T& t, std::string_view v, std::string& err) {
+                return parse_number_list_option(nm, v, lo, hi, max_count, t.*member, err);
+            },
+            [=](const T& t) {
+                return (t.*member).empty() ? empty : format_number_list(t.*member);
+            } });
         return *this;
     }
     /// An enum member chosen by name.

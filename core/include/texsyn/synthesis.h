@@ -27,6 +27,7 @@
 #include <texsyn/image.h>
 #include <texsyn/options.h>
 #include <texsyn/pyramid.h>
+#include <texsyn/stats.h>
 
 namespace texsyn {
 
@@ -40,6 +41,14 @@ struct PyramidOptions {
     int orientations = 4; ///< steerable bands per scale, 1..8
     HistogramMode histogram = HistogramMode::Exact;
     FftBackend fft = FftBackend::Kiss;
+    /// §6 "a slider for each parameter": contrast gain of each scale's bands (s0 finest;
+    /// the high-pass residual follows s0), applied to the sample's band statistics.
+    /// Empty = all 1; missing trailing scales are 1.
+    std::vector<float> gain;
+    /// Orientation-energy balance of each scale, in [-1, 1] (steerable only): band k of K
+    /// is scaled by 1 + b cos(2 pi k / K), so b > 0 strengthens orientation 0 (vertical
+    /// structure, horizontal frequency) against orientation K/2, b < 0 the opposite.
+    std::vector<float> balance;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) after each iteration of each channel, from the
@@ -58,6 +67,28 @@ struct NamedImage {
     std::string name;  ///< e.g. "sample.s2.o1", "synth.highpass", "synth.L3"
     PlanarImage image; ///< channels pc0, pc1, … (decorrelated colour) plus A if alpha
 };
+
+/// Heeger & Bergen's analysis of `sample` (§3.3, §3.5): PCA colour transform (or
+/// `basis` if not null, so several samples can share one), then per component its
+/// histogram and the histograms of its subbands (steerable: of the periodic component;
+/// laplacian: reflected edges, §3.4). Uses opt.pyramid, opt.orientations and opt.scales
+/// (0 = the most that keeps the coarsest band of the sample and of an opt.width x
+/// opt.height output >= 8 px). If `subbands` is not null it receives the sample's
+/// subbands ("sample.<band>"). Fails (false, `error`) on invalid options, NaN/Inf
+/// pixels, a sample too small for the pyramid, or a basis with the wrong channel count.
+bool analyze_texture(const OIIO::ImageBuf& sample, const PyramidOptions& opt,
+    TextureStatistics& stats, std::string& error, const ColorTransform* basis = nullptr,
+    std::vector<NamedImage>* subbands = nullptr);
+
+/// The synthesis half of pyramid_synthesize: match-texture towards `stats` (opt.gain and
+/// opt.balance applied to its band statistics). opt.pyramid, orientations and scales
+/// must agree with the analysis (scales 0 = the analysis's). Starts from seeded noise, or
+/// from `start` if not null (texture transfer, §5: the image's layout, the statistics of
+/// `stats`; same channel count, output size = its size). Writes subbands "synth.<band>"
+/// if `subbands` is not null. Same result conventions as pyramid_synthesize.
+bool synthesize_from_statistics(OIIO::ImageBuf& dst, const TextureStatistics& stats,
+    const PyramidOptions& opt, const OIIO::ImageBuf* start = nullptr,
+    std::vector<NamedImage>* subbands = nullptr);
 
 /// Bytes of memory a synthesis of this size needs (the estimate the size check uses).
 size_t pyramid_memory_estimate(int width, int height, int nchannels, const PyramidOptions& opt);

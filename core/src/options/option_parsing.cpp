@@ -47,6 +47,52 @@ bool parse_size_option(std::string_view name, std::string_view text, int hi, int
     return true;
 }
 
+bool parse_number_list_option(std::string_view name, std::string_view text, float lo, float hi,
+    size_t max_count, std::vector<float>& values, std::string& error)
+{
+    std::vector<float> v;
+    std::string_view rest = text;
+    while (true) {
+        const size_t comma = rest.find(',');
+        const std::string_view piece = rest.substr(0, comma);
+        float x = 0.0f;
+        auto [end, ec] = std::from_chars(piece.data(), piece.data() + piece.size(), x);
+        if (piece.empty() || ec != std::errc() || end != piece.data() + piece.size()) {
+            error = std::string(name) + "=" + std::string(text)
+                + " is not a list of numbers (expected e.g. 1,1,1.5)";
+            return false;
+        }
+        if (!(x >= lo && x <= hi)) {
+            error = std::string(name) + "=" + std::string(text) + " : " + std::string(piece)
+                + " is out of range (" + format_number_list({ lo }) + ".."
+                + format_number_list({ hi }) + ")";
+            return false;
+        }
+        v.push_back(x);
+        if (comma == std::string_view::npos)
+            break;
+        rest.remove_prefix(comma + 1);
+    }
+    if (v.size() > max_count) {
+        error = std::string(name) + "=" + std::string(text) + " has " + std::to_string(v.size())
+            + " values (at most " + std::to_string(max_count) + ")";
+        return false;
+    }
+    values = std::move(v);
+    return true;
+}
+
+std::string format_number_list(const std::vector<float>& values)
+{
+    std::string s;
+    for (float x : values) {
+        char buf[32];
+        auto [end, ec] = std::to_chars(buf, buf + sizeof(buf), x);
+        s += (s.empty() ? "" : ",") + std::string(buf, ec == std::errc() ? end : buf);
+    }
+    return s;
+}
+
 bool split_option_string(std::string_view text,
     std::vector<std::pair<std::string, std::string>>& pairs, std::string& error)
 {

@@ -25,6 +25,13 @@ const OptionTable<PyramidOptions>& PyramidOptions::table()
             "histogram matching: exact quantiles, or the paper's 256-bin cdf");
         t.choice("fft", &O::fft, { { "kiss", FftBackend::Kiss }, { "fftw", FftBackend::Fftw } },
             "FFT backend: kiss (built in) or fftw (only in -DTEXSYN_WITH_FFTW=ON builds)");
+        t.numbers("gain", &O::gain, 0.0f, 16.0f, 16, "1",
+            "contrast gain of each scale's bands, finest first (s0; the high-pass follows s0), "
+            "applied to the sample's statistics (paper §6 sliders); missing scales are 1");
+        t.numbers("balance", &O::balance, -1.0f, 1.0f, 16, "0",
+            "orientation-energy balance of each scale, finest first (steerable only): band k of "
+            "K is scaled by 1 + b cos(2 pi k/K); b > 0 favours orientation 0 (vertical "
+            "structure), b < 0 orientation K/2");
         return t;
     }();
     return t;
@@ -47,6 +54,20 @@ bool PyramidOptions::validate(std::string& error) const
     }
     if (scales < 0 || scales > 16) {
         error = "scales=" + std::to_string(scales) + " is out of range (0..16)";
+        return false;
+    }
+    for (float g : gain)
+        if (!(g > 0.0f && g <= 16.0f)) {
+            error = "gain=" + format_number_list(gain) + " : each gain must be in (0, 16]";
+            return false;
+        }
+    for (float b : balance)
+        if (!(b >= -1.0f && b <= 1.0f)) {
+            error = "balance=" + format_number_list(balance) + " : each value must be in -1..1";
+            return false;
+        }
+    if (!balance.empty() && pyramid != PyramidKind::Steerable) {
+        error = "balance= needs pyramid=steerable (the laplacian pyramid has no orientations)";
         return false;
     }
     if (!fft_backend_available(fft)) {
