@@ -19,5 +19,12 @@ oiiotool "$out/stucco_tile.png" "$out/stucco_tile.png" "$out/stucco_tile.png" "$
     --mosaic 2x2 -o "$out/stucco_tiled_2x2.png"
 "$texsyn" --seed 1 "$samples/rust.png" --pyramid:size=512x512:iterations=0 -o "$out/rust_iter0.png"
 "$texsyn" --seed 1 "$samples/rust.png" --pyramid:size=512x512:iterations=1 -o "$out/rust_iter1.png"
-rm -f "$out/stucco_tile.png"
+# docs/analysis-files.md: the statistics sliders, from one analysis.
+"$texsyn" "$samples/rust.png" --analyze -o "$out/rust.tsa"
+for look in "rust_sliders_default|" "rust_gain_coarse|:gain=1,1,2,1" "rust_gain_fine|:gain=2,0.5" \
+    "rust_balance_vertical|:balance=0.8,0.8,0.8,0.8" \
+    "rust_balance_horizontal|:balance=-0.8,-0.8,-0.8,-0.8"; do
+    "$texsyn" --seed 1 "$out/rust.tsa" --pyramid:size=192x192${look#*|} -o "$out/${look%%|*}.png"
+done
+rm -f "$out/stucco_tile.png" "$out/rust.tsa"
 ls -la "$out"

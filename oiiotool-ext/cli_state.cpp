@@ -23,6 +23,14 @@ StackImage& CliState::top(const std::string& command)
 
 StackImage CliState::pop(const std::string& command)
 {
+    if (top(command).statistics)
+        throw CliError(command + " : " + top(command).source
+            + " is an analysis, not an image (only --pyramid synthesizes from an analysis)");
+    return pop_sample(command);
+}
+
+StackImage CliState::pop_sample(const std::string& command)
+{
     StackImage img = std::move(top(command));
     stack.pop_back();
     return img;

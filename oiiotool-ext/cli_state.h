@@ -20,12 +20,15 @@ struct CliError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// One image on the stack. Pixels are float and scene-linear.
+/// One item on the stack: an image (float, scene-linear pixels in `buf`) or an analysis
+/// (`statistics` set, `buf` empty) read from a .tsa file or made by --analyze.
 struct StackImage {
     OIIO::ImageBuf buf;
+    std::shared_ptr<const TextureStatistics> statistics;
     OIIO::ImageBuf file_pixels; ///< an input's pixels as read (for --iscolorspace)
     OIIO::TypeDesc input_format = OIIO::TypeUInt8; ///< the sample file's pixel type
     std::string source;                            ///< the sample file it came from
+    bool from_file = false;                        ///< an input file, or made from one by --analyze
     std::string input_colorspace;                  ///< the space the sample file was in
     std::string output_colorspace;                 ///< set by --tocolorspace; "" = default policy
     std::vector<NamedImage> subbands;              ///< filled when --subbands is on
@@ -60,8 +63,11 @@ struct CliState {
 
     /// The top image; throws CliError naming `command` if the stack is empty.
     StackImage& top(const std::string& command);
-    /// Pops the top image; throws CliError naming `command` if the stack is empty.
+    /// Pops the top image; throws CliError naming `command` if the stack is empty or its
+    /// top is an analysis rather than an image.
     StackImage pop(const std::string& command);
+    /// Pops the top item, image or analysis (for commands that synthesize from either).
+    StackImage pop_sample(const std::string& command);
 
 private:
     std::unique_ptr<ColorConfig> m_colors;
@@ -84,6 +90,12 @@ PyramidOptions parse_pyramid_options(const std::string& command, const std::stri
 
 /// --pyramid[:name=value…]: pops a sample, pushes the synthesis.
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// --analyze[:name=value…]: pops an image, pushes its analysis (written with -o x.tsa).
+void run_analyze(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// Checks --analyze's modifiers (only the analysis settings are allowed); throws CliError.
+PyramidOptions parse_analyze_options(const std::string& command, const std::string& modifiers);
 
 /// --recipe FILE: writes the recipe of the top image (a synthesis of a sample file), with
 /// paths relative to FILE's folder, to a temporary file in pending_outputs.

@@ -45,12 +45,17 @@ void print_help()
         "                          pyramid subband of the sample and the synthesis\n"
         "\n"
         "Commands:\n"
-        "    -o FILE               Write the current image to FILE (atomically)\n"
+        "    FILE                  Read an image, or an analysis file (*.tsa)\n"
+        "    -o FILE               Write the current image (or analysis, as *.tsa) to FILE\n"
+        "                          (atomically)\n"
         "    --recipe FILE.texsyn  Write the recipe of the current synthesis: OIIO tools\n"
         "                          open it as an image with texsyn's format plugin\n"
+        "    --analyze[:pyramid=,scales=,orientations=,fft=]\n"
+        "                          Replace the current image by its pyramid analysis, to\n"
+        "                          write as *.tsa and synthesize from without the sample\n"
         "    --pyramid[:name=value...]\n"
         "                          Heeger & Bergen 1995 pyramid synthesis of the current\n"
-        "                          image. Options:\n",
+        "                          image or analysis. Options:\n",
         version());
     print_table(PyramidOptions::table(), PyramidOptions());
     std::printf("\nExample:\n"

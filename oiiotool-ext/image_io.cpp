@@ -16,8 +16,43 @@
 
 namespace texsyn::cli {
 
+namespace {
+
+void push_analysis(CliState& state, const std::string& filename)
+{
+    auto stats = std::make_shared<TextureStatistics>();
+    std::string error;
+    if (!read_statistics(filename, *stats, error))
+        throw CliError(error);
+    StackImage img;
+    img.source = filename;
+    img.from_file = true;
+    img.input_colorspace = stats->colorspace;
+    img.input_format
+        = stats->sample_format.empty() ? OIIO::TypeFloat : OIIO::TypeDesc(stats->sample_format);
+    img.output_colorspace = state.pending_tocolorspace;
+    img.statistics = std::move(stats);
+    if (!state.pending_iscolorspace.empty())
+        throw CliError("--iscolorspace : " + filename
+            + " is an analysis, its statistics are already scene-linear");
+    state.stack.push_back(std::move(img));
+}
+
+void write_analysis(CliState& state, const StackImage& img, const std::string& filename)
+{
+    const std::string tmp = temporary_path_for(filename);
+    state.pending_outputs.emplace_back(tmp, filename);
+    std::string error;
+    if (!write_statistics(tmp, *img.statistics, error))
+        throw CliError("-o " + filename + " : could not write the analysis file");
+}
+
+} // namespace
+
 void push_input(CliState& state, const std::string& filename)
 {
+    if (is_analysis_filename(filename))
+        return push_analysis(state, filename);
     StackImage img;
     OIIO::ImageSpec native;
     std::string error;
@@ -29,6 +64,7 @@ void push_input(CliState& state, const std::string& filename)
     if (!ok)
         throw CliError(error);
     img.source = filename;
+    img.from_file = true;
     img.input_format = native.format;
     img.output_colorspace = state.pending_tocolorspace;
     state.stack.push_back(std::move(img));
@@ -59,6 +95,14 @@ void reinterpret_input(CliState& state, const std::string& colorspace)
 void write_output(CliState& state, const std::string& filename)
 {
     StackImage& img = state.top("-o");
+    if (is_analysis_filename(filename) != bool(img.statistics))
+        throw CliError("-o " + filename
+            + (img.statistics ? " : the current item is an analysis; write it as *.tsa, or "
+                                "synthesize from it first (--pyramid)"
+                              : " : analysis files are made by --analyze (the current item is "
+                                "an image)"));
+    if (img.statistics)
+        return write_analysis(state, img, filename);
     const ColorConfig& cc = state.colors();
     const OIIO::TypeDesc type = output_pixel_type(filename, state.data_format, img.input_format);
     std::string space = img.output_colorspace;

@@ -42,7 +42,7 @@ std::pair<std::string, std::string> split_command(const std::string& a)
 
 bool is_command(const std::string& name)
 {
-    return name == "--pyramid";
+    return name == "--pyramid" || name == "--analyze";
 }
 
 int64_t int_argument(const std::string& option, const std::string& value, int64_t lo, int64_t hi)
@@ -141,7 +141,10 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             if (!is_command(name))
                 throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
             check_written(i);
-            parse_pyramid_options(name, modifiers);
+            if (name == "--analyze")
+                parse_analyze_options(name, modifiers);
+            else
+                parse_pyramid_options(name, modifiers);
         } else {
             check_written(i);
             inputs.push_back(a);
@@ -156,6 +159,11 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
     }
     for (const std::string& out : outputs) {
         check_output_path("-o", out, inputs);
+        if (is_analysis_filename(out)) {
+            if (state.subbands)
+                throw CliError("-o " + out + " : --subbands writes images, not analysis files");
+            continue;
+        }
         auto writer = OIIO::ImageOutput::create(out);
         if (!writer) {
             (void)OIIO::geterror();
@@ -204,6 +212,8 @@ void run(CliState& state, const std::vector<std::string>& args)
             auto [name, modifiers] = split_command(a);
             if (name == "--pyramid")
                 run_pyramid(state, name, modifiers);
+            else if (name == "--analyze")
+                run_analyze(state, name, modifiers);
         } else {
             push_input(state, a);
         }

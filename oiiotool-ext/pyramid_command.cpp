@@ -43,20 +43,22 @@ void run_pyramid(CliState& state, const std::string& command, const std::string&
     if (state.progress)
         opt.progress = show_progress;
 
-    StackImage sample = state.pop(command);
+    StackImage sample = state.pop_sample(command);
     StackImage result;
     result.source = sample.source;
     result.input_colorspace = sample.input_colorspace;
     result.input_format = sample.input_format;
     result.output_colorspace = sample.output_colorspace;
     auto start = std::chrono::steady_clock::now();
-    bool ok = pyramid_synthesize(
-        result.buf, sample.buf, opt, state.subbands ? &result.subbands : nullptr);
+    std::vector<NamedImage>* subbands = state.subbands ? &result.subbands : nullptr;
+    bool ok = sample.statistics
+        ? synthesize_from_statistics(result.buf, *sample.statistics, opt, nullptr, subbands)
+        : pyramid_synthesize(result.buf, sample.buf, opt, subbands);
     if (state.progress)
         std::fprintf(stderr, "\n");
     if (!ok)
         throw CliError(command + " : " + result.buf.geterror());
-    if (sample.file_pixels.initialized()) { // a synthesis of a file: a recipe can say it
+    if (sample.from_file) { // a synthesis of a file: a recipe can say it
         result.has_recipe = true;
         result.recipe.sample = sample.source;
         result.recipe.iscolorspace = sample.input_colorspace;

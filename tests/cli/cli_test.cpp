@@ -522,3 +522,65 @@ TEST_F(Cli, RecipesAreWrittenForSynthesesOfFiles)
     expect_failure("stucco.png --pyramid --recipe r2.json",
         "texsyn ERROR: --recipe r2.json : name the recipe *.texsyn", { "stucco.png", "r.texsyn" });
 }
+
+TEST_F(Cli, AnAnalysisFileSynthesizesWhatTheSampleWould)
+{
+    CliRun r = texsyn("stucco.png --analyze -o stucco.tsa");
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = texsyn("--seed 3 stucco.tsa --pyramid:size=300x200:iterations=2 -o from_tsa.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = texsyn("--seed 3 stucco.png --pyramid:size=300x200:iterations=2 -o from_png.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(OIIO::ImageBufAlgo::computePixelHashSHA1(read("from_tsa.exr")),
+        OIIO::ImageBufAlgo::computePixelHashSHA1(read("from_png.exr")));
+    // Integer outputs go back to the sample's colour space and pixel type, as from the png.
+    r = texsyn("--seed 3 stucco.tsa --pyramid:size=64x64:iterations=1 -o a.png "
+               "--recipe a.texsyn");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(file_type("a.png"), OIIO::TypeUInt8);
+    EXPECT_EQ(read("a.png").spec().get_string_attribute("synth:colorspace"), "sRGB - Texture");
+    EXPECT_NE(slurp(dir / "a.texsyn").find("\"sample\": \"stucco.tsa\""), std::string::npos);
+    // A Laplacian analysis synthesizes with pyramid=laplacian, and says so otherwise.
+    r = texsyn("stucco.png --analyze:pyramid=laplacian:scales=3 -o lap.tsa");
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = texsyn("lap.tsa --pyramid:pyramid=laplacian:size=64x64:iterations=1 -o lap.exr");
+    EXPECT_EQ(r.status, 0) << r.err;
+    r = texsyn("lap.tsa --pyramid:size=64x64 -o bad.exr");
+    EXPECT_EQ(r.first_err_line(),
+        "texsyn ERROR: --pyramid : pyramid=steerable differs from the analysis "
+        "(pyramid=laplacian)");
+}
+
+TEST_F(Cli, BadAnalysisCommandsAndFilesAreRefused)
+{
+    expect_failure("stucco.png --analyze:iterations=3 -o a.tsa",
+        "texsyn ERROR: --analyze : iterations= is not an analysis option (known: pyramid, "
+        "scales, orientations, fft; give synthesis options to --pyramid)");
+    expect_failure("stucco.png --analyze -o a.exr",
+        "texsyn ERROR: -o a.exr : the current item is an analysis; write it as *.tsa, or "
+        "synthesize from it first (--pyramid)");
+    expect_failure("stucco.png --pyramid:size=32x32 -o a.tsa",
+        "texsyn ERROR: -o a.tsa : analysis files are made by --analyze (the current item is an "
+        "image)");
+    expect_failure("--subbands stucco.png --analyze -o a.tsa",
+        "texsyn ERROR: -o a.tsa : --subbands writes images, not analysis files");
+    expect_failure("stucco.png --analyze:scales=9 -o a.tsa",
+        "texsyn ERROR: --analyze : scales=9 is too many for a 128x128 sample (at most 4)");
+    std::ofstream(dir / "junk.tsa") << "not an analysis";
+    expect_failure("junk.tsa --pyramid -o a.exr",
+        "texsyn ERROR: junk.tsa: not a texsyn analysis file (no texsyn-analysis signature)",
+        { "stucco.png", "junk.tsa" });
+    ASSERT_EQ(texsyn("stucco.png --analyze -o good.tsa").status, 0);
+    const std::string good = slurp(dir / "good.tsa");
+    std::ofstream(dir / "cut.tsa", std::ios::binary) << good.substr(0, good.size() / 3);
+    expect_failure("cut.tsa --pyramid -o a.exr",
+        "texsyn ERROR: cut.tsa: corrupted or truncated analysis file (checksum mismatch)",
+        { "stucco.png", "junk.tsa", "good.tsa", "cut.tsa" });
+    expect_failure("--iscolorspace Raw good.tsa --pyramid -o a.exr",
+        "texsyn ERROR: --iscolorspace : good.tsa is an analysis, its statistics are already "
+        "scene-linear",
+        { "stucco.png", "junk.tsa", "good.tsa", "cut.tsa" });
+    expect_failure("good.tsa -o good.tsa",
+        "texsyn ERROR: -o good.tsa : refusing to overwrite the input good.tsa",
+        { "stucco.png", "junk.tsa", "good.tsa", "cut.tsa" });
+}

@@ -81,6 +81,20 @@ TEST_F(Plugin, RecipeFromTheToolGivesTheToolsPixels)
     EXPECT_EQ(r.status, 0) << r.out;
 }
 
+TEST_F(Plugin, AnAnalysisFileIsARecipesSample)
+{
+    ASSERT_EQ(sh("'" + texsyn_exe + "' s.png --analyze -o s.tsa").status, 0);
+    ASSERT_EQ(sh("'" + texsyn_exe
+                  + "' --seed 4 s.png --pyramid:size=160x144:iterations=2 -d float -o cli.exr")
+                  .status,
+        0);
+    write("t.texsyn", R"({"sample": "s.tsa", "size": "160x144", "iterations": 2, "seed": 4})");
+    ToolRun r = sh("oiiotool t.texsyn -d float -o a.exr && idiff -fail 0 cli.exr a.exr && "
+                   "oiiotool 's.tsa.texsyn?size=160x144&iterations=2&seed=4' -d float -o b.exr "
+                   "&& idiff -fail 0 cli.exr b.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+}
+
 TEST_F(Plugin, SampleNamePlusRestArgumentsAndMetadata)
 {
     ToolRun r = sh("iinfo -v 's.png.texsyn?size=96x40&seed=3&iterations=1'");

@@ -84,3 +84,22 @@ TEST(Options, FftwIsRefusedWhenNotBuiltIn)
     std::string error;
     EXPECT_EQ(opt.validate(error), fft_backend_available(FftBackend::Fftw));
 }
+
+TEST(Options, NumberListsParseAndRoundTrip)
+{
+    PyramidOptions opt;
+    std::string error;
+    ASSERT_TRUE(PyramidOptions::table().set(opt, "gain", "1,0.5,1.25", error)) << error;
+    EXPECT_EQ(opt.gain, (std::vector<float> { 1.0f, 0.5f, 1.25f }));
+    EXPECT_NE(PyramidOptions::table().format(opt).find(":gain=1,0.5,1.25:"), std::string::npos);
+    EXPECT_FALSE(PyramidOptions::table().set(opt, "gain", "1,,2", error));
+    EXPECT_EQ(error, "gain=1,,2 is not a list of numbers (expected e.g. 1,1,1.5)");
+    EXPECT_FALSE(PyramidOptions::table().set(opt, "gain", "1,20", error));
+    EXPECT_EQ(error, "gain=1,20 : 20 is out of range (0..16)");
+    EXPECT_FALSE(PyramidOptions::table().set(opt, "balance", "nan", error));
+    EXPECT_EQ(error, "balance=nan : nan is out of range (-1..1)");
+    EXPECT_FALSE(
+        PyramidOptions::table().set(opt, "balance", "0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0", error));
+    EXPECT_EQ(error, "balance=0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 has 17 values (at most 16)");
+    EXPECT_EQ(opt.gain, (std::vector<float> { 1.0f, 0.5f, 1.25f })); // unchanged on failure
+}

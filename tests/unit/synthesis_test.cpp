@@ -12,33 +12,13 @@
 
 #include <gtest/gtest.h>
 
+#include "test_samples.h"
+
 using namespace texsyn;
+using texsyn::test::linear_sample;
+using texsyn::test::planes_of;
 
 namespace {
-
-// A sample as the tool sees it: read, converted from sRGB to scene-linear float.
-OIIO::ImageBuf linear_sample(const std::string& name)
-{
-    OIIO::ImageBuf file;
-    std::string error;
-    EXPECT_TRUE(read_image(std::string(TEXSYN_TEST_DATA) + "/" + name, file, error)) << error;
-    PlanarImage planes;
-    EXPECT_TRUE(planes_from_imagebuf(file, planes, error)) << error;
-    auto cc = ColorConfig::load(TEXSYN_BUNDLED_OCIO_CONFIG, error);
-    EXPECT_TRUE(cc) << error;
-    EXPECT_TRUE(cc->convert(planes, "sRGB - Texture", cc->scene_linear(), error)) << error;
-    OIIO::ImageBuf buf;
-    imagebuf_from_planes(planes, buf);
-    return buf;
-}
-
-PlanarImage planes_of(const OIIO::ImageBuf& buf)
-{
-    PlanarImage p;
-    std::string error;
-    EXPECT_TRUE(planes_from_imagebuf(buf, p, error)) << error;
-    return p;
-}
 
 PyramidOptions options(int w, int h, int iterations = 5)
 {
@@ -265,4 +245,82 @@ TEST(PyramidSynthesis, RefusesSamplesTooSmallAndAbsurdSizes)
     std::string msg = out.geterror();
     EXPECT_EQ(msg.find("size=200000x200000 would need about "), 0u) << msg;
     EXPECT_NE(msg.find("TB of memory"), std::string::npos) << msg;
+}
+
+namespace {
+
+// Mean square of band `name` of component 0 of `image`, analysed in `basis`.
+double band_energy(
+    const OIIO::ImageBuf& image, const ColorTransform& basis, int scales, const std::string& name)
+{
+    PyramidOptions opt;
+    opt.scales = scales;
+    TextureStatistics stats;
+    std::string error;
+    EXPECT_TRUE(analyze_texture(image, opt, stats, error, &basis)) << error;
+    for (size_t b = 0; b < stats.band_names.size(); ++b)
+        if (stats.band_names[b] == name) {
+            double sum = 0.0;
+            for (float v : stats.components[0].bands[b].sorted())
+                sum += double(v) * v;
+            return sum / double(stats.components[0].bands[b].sorted().size());
+        }
+    ADD_FAILURE() << "no band " << name;
+    return 0.0;
+}
+
+} // namespace
+
+TEST(PyramidSynthesis, GainAndBalanceSlidersChangeTheBandsTheyName)
+{
+    const OIIO::ImageBuf sample = linear_sample("stucco_yellow.png");
+    PyramidOptions opt = options(128, 128, 4);
+    opt.scales = 3;
+    TextureStatistics stats;
+    std::string error;
+    ASSERT_TRUE(analyze_texture(sample, opt, stats, error)) << error;
+    const OIIO::ImageBuf plain = pyramid_synthesize(sample, opt);
+    opt.gain = { 1.0f, 1.0f, 2.0f };
+    const OIIO::ImageBuf gained = pyramid_synthesize(sample, opt);
+    opt.gain.clear();
+    opt.balance = { 0.0f, 0.8f };
+    const OIIO::ImageBuf balanced = pyramid_synthesize(sample, opt);
+    ASSERT_FALSE(plain.has_error() || gained.has_error() || balanced.has_error());
+
+    // gain=1,1,2: scale 2 carries clearly more contrast, scale 0 about the same.
+    double s2 = 0.0, s2_gained = 0.0;
+    for (const char* band : { "s2.o0", "s2.o1", "s2.o2", "s2.o3" }) {
+        s2 += band_energy(plain, stats.color, 3, band);
+        s2_gained += band_energy(gained, stats.color, 3, band);
+    }
+    EXPECT_GT(s2_gained / s2, 2.0);
+    const double s0_ratio = band_energy(gained, stats.color, 3, "s0.o1")
+        / band_energy(plain, stats.color, 3, "s0.o1");
+    EXPECT_NEAR(s0_ratio, 1.0, 0.35);
+
+    // balance=0,0.8: at scale 1, orientation 0 gains on orientation 2 (x1.8 vs x0.2).
+    const double plain_tilt
+        = band_energy(plain, stats.color, 3, "s1.o0") / band_energy(plain, stats.color, 3, "s1.o2");
+    const double balanced_tilt = band_energy(balanced, stats.color, 3, "s1.o0")
+        / band_energy(balanced, stats.color, 3, "s1.o2");
+    EXPECT_GT(balanced_tilt / plain_tilt, 4.0);
+}
+
+TEST(PyramidSynthesis, SlidersAreChecked)
+{
+    const OIIO::ImageBuf sample = linear_sample("stucco_yellow.png");
+    PyramidOptions opt = options(64, 64, 1);
+    opt.scales = 2;
+    opt.gain = { 1.0f, 1.0f, 1.0f };
+    OIIO::ImageBuf out = pyramid_synthesize(sample, opt);
+    EXPECT_EQ(out.geterror(), "gain=1,1,1 has 3 values but the pyramid has 2 scales");
+    opt.gain = { 0.0f };
+    out = pyramid_synthesize(sample, opt);
+    EXPECT_EQ(out.geterror(), "gain=0 : each gain must be in (0, 16]");
+    opt.gain.clear();
+    opt.balance = { 0.5f };
+    opt.pyramid = PyramidKind::Laplacian;
+    out = pyramid_synthesize(sample, opt);
+    EXPECT_EQ(out.geterror(),
+        "balance= needs pyramid=steerable (the laplacian pyramid has no orientations)");
 }

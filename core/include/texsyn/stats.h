@@ -33,13 +33,14 @@ struct TextureStatistics {
     PyramidKind pyramid = PyramidKind::Steerable;
     int scales = 0;       ///< fixed at analysis time: the bands' pyramid has this many
     int orientations = 4; ///< steerable bands per scale (unused by laplacian)
-    std::vector<std::string> band_names;         ///< the pyramid's band names, in order
-    std::vector<std::string> channel_names;      ///< the sample's channels
-    int alpha_channel = -1;                      ///< index in channel_names, or -1
-    bool unassociated_alpha = false;             ///< the sample said "oiio:UnassociatedAlpha"
-    std::string colorspace;                      ///< the sample's colour space before linearisation
-    std::string source;                          ///< the sample's file name, if known
-    ColorTransform color;                        ///< §3.5 PCA of the colour channels
+    std::vector<std::string> band_names;    ///< the pyramid's band names, in order
+    std::vector<std::string> channel_names; ///< the sample's channels
+    int alpha_channel = -1;                 ///< index in channel_names, or -1
+    bool unassociated_alpha = false;        ///< the sample said "oiio:UnassociatedAlpha"
+    std::string colorspace;                 ///< the sample's colour space before linearisation
+    std::string source;                     ///< the sample's file name, if known
+    std::string sample_format; ///< the sample file's pixel type ("uint8", …), if known
+    ColorTransform color;      ///< §3.5 PCA of the colour channels
     std::vector<ComponentStatistics> components; ///< one per channel, decorrelated
     std::vector<QuantileTable> channels;         ///< per sample channel (the final match)
 

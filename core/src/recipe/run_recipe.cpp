@@ -25,6 +25,39 @@ struct DepthGuard {
     DepthGuard& operator=(const DepthGuard&) = delete;
 };
 
+// The synthesis of the recipe's sample (an image, or an analysis file), scene-linear.
+bool synthesize_sample(const Recipe& recipe, const ColorConfig& colors, OIIO::ImageBuf& synth,
+    std::vector<NamedImage>* subbands, std::string& error)
+{
+    if (!recipe.subbands)
+        subbands = nullptr;
+    if (is_analysis_filename(recipe.sample)) {
+        TextureStatistics stats;
+        if (!read_statistics(recipe.sample, stats, error))
+            return false;
+        if (synthesize_from_statistics(synth, stats, recipe.pyramid, nullptr, subbands))
+            return true;
+        error = synth.geterror();
+        return false;
+    }
+    OIIO::ImageBuf file;
+    OIIO::ImageSpec native;
+    if (!read_image(recipe.sample, file, error, &native))
+        return false;
+    const std::string from = recipe.iscolorspace.empty() ? colors.guess_colorspace(native)
+                                                         : colors.resolve(recipe.iscolorspace);
+    OIIO::ImageBuf sample;
+    if (!colors.convert_image(
+            file, from, colors.scene_linear(), false, sample, error, recipe.pyramid.nthreads)) {
+        error = recipe.sample + ": " + error;
+        return false;
+    }
+    if (pyramid_synthesize(synth, sample, recipe.pyramid, subbands))
+        return true;
+    error = synth.geterror();
+    return false;
+}
+
 } // namespace
 
 bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImage>* subbands,
@@ -39,12 +72,6 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
     auto colors = ColorConfig::load(recipe.colorconfig, error);
     if (!colors)
         return false;
-    OIIO::ImageBuf file;
-    OIIO::ImageSpec native;
-    if (!read_image(recipe.sample, file, error, &native))
-        return false;
-    const std::string from = recipe.iscolorspace.empty() ? colors->guess_colorspace(native)
-                                                         : colors->resolve(recipe.iscolorspace);
     const std::string to = recipe.tocolorspace.empty() ? colors->scene_linear()
                                                        : colors->resolve(recipe.tocolorspace);
     for (auto [key, name] : { std::pair { "iscolorspace", &recipe.iscolorspace },
@@ -54,16 +81,9 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
                 + OIIO::Strutil::join(colors->colorspace_names(), ", ") + ")";
             return false;
         }
-    OIIO::ImageBuf sample, synth;
-    if (!colors->convert_image(
-            file, from, colors->scene_linear(), false, sample, error, recipe.pyramid.nthreads)) {
-        error = recipe.sample + ": " + error;
+    OIIO::ImageBuf synth;
+    if (!synthesize_sample(recipe, *colors, synth, subbands, error))
         return false;
-    }
-    if (!pyramid_synthesize(synth, sample, recipe.pyramid, recipe.subbands ? subbands : nullptr)) {
-        error = synth.geterror();
-        return false;
-    }
     if (!colors->convert_image(
             synth, colors->scene_linear(), to, true, dst, error, recipe.pyramid.nthreads))
         return false;

@@ -69,7 +69,7 @@ nlohmann::ordered_json header_of(const TextureStatistics& s)
     nlohmann::ordered_json j;
     j["version"] = analysis_file_version;
     j["sample"] = { { "width", s.sample_width }, { "height", s.sample_height },
-        { "source", s.source }, { "colorspace", s.colorspace } };
+        { "source", s.source }, { "colorspace", s.colorspace }, { "format", s.sample_format } };
     j["pyramid"] = { { "kind", pyramid_kind_name(s.pyramid) }, { "scales", s.scales },
         { "orientations", s.orientations }, { "bands", s.band_names } };
     j["channels"] = s.channel_names;
@@ -125,6 +125,7 @@ void parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<siz
     s.sample_height = sample.at("height").get<int>();
     s.source = sample.at("source").get<std::string>();
     s.colorspace = sample.at("colorspace").get<std::string>();
+    s.sample_format = sample.at("format").get<std::string>();
     if (s.sample_width < 16 || s.sample_height < 16 || s.sample_width > max_side
         || s.sample_height > max_side)
         fail("sample size " + std::to_string(s.sample_width) + "x" + std::to_string(s.sample_height)
@@ -293,8 +294,10 @@ bool parse_statistics(
         const nlohmann::json header = nlohmann::json::parse(
             bytes.begin() + std::ptrdiff_t(header_at), bytes.begin() + std::ptrdiff_t(payload_at));
         parse_header(header, s, sizes);
-    } catch (const std::exception& e) {
+    } catch (const nlohmann::json::exception& e) {
         return fail(std::string("malformed header: ") + e.what());
+    } catch (const std::exception& e) {
+        return fail(std::string("invalid header: ") + e.what());
     }
     size_t total = 0;
     for (size_t n : sizes)

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: Apache-2.0
+// Samples for unit tests, as the tool sees them.
+#pragma once
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include <texsyn/color.h>
+#include <texsyn/image.h>
+#include <texsyn/io.h>
+
+namespace texsyn::test {
+
+/// A bundled sample (data/samples/<name>) read and converted from sRGB to scene-linear float.
+inline OIIO::ImageBuf linear_sample(const std::string& name)
+{
+    OIIO::ImageBuf file;
+    std::string error;
+    EXPECT_TRUE(read_image(std::string(TEXSYN_TEST_DATA) + "/" + name, file, error)) << error;
+    PlanarImage planes;
+    EXPECT_TRUE(planes_from_imagebuf(file, planes, error)) << error;
+    auto cc = ColorConfig::load(TEXSYN_BUNDLED_OCIO_CONFIG, error);
+    EXPECT_TRUE(cc) << error;
+    EXPECT_TRUE(cc->convert(planes, "sRGB - Texture", cc->scene_linear(), error)) << error;
+    OIIO::ImageBuf buf;
+    imagebuf_from_planes(planes, buf);
+    return buf;
+}
+
+/// The planes of an image (test fails on error).
+inline PlanarImage planes_of(const OIIO::ImageBuf& buf)
+{
+    PlanarImage p;
+    std::string error;
+    EXPECT_TRUE(planes_from_imagebuf(buf, p, error)) << error;
+    return p;
+}
+
+} // namespace texsyn::test
