@@ -349,7 +349,7 @@ TEST_F(Cli, MalformedCommandsAndOptionsAreRefused)
         "texsyn ERROR: unknown command or option '--frobnicate' (see texsyn --help)");
     expect_failure("stucco.png --pyramid:levels=3 -o out.exr",
         "texsyn ERROR: --pyramid : unknown option 'levels' (known: size, iterations, "
-        "pyramid, scales, orientations, histogram, fft, gain, balance)");
+        "pyramid, scales, orientations, histogram, fft, gain, balance, flatten)");
     expect_failure("stucco.png --pyramid:size=abc -o out.exr",
         "texsyn ERROR: --pyramid : size=abc is not a size (expected WxH, e.g. 1024x1024)");
     expect_failure("stucco.png --pyramid:size=0x10 -o out.exr",
@@ -482,7 +482,7 @@ TEST_F(Cli, AFailedRunLeavesNoOutputAtAll)
     expect_failure("stucco.png --pyramid:size=32x32:iterations=1 -o a.png stucco.png "
                    "--pyramid:bogus=1 -o b.png",
         "texsyn ERROR: --pyramid : unknown option 'bogus' (known: size, iterations, pyramid, "
-        "scales, orientations, histogram, fft, gain, balance)");
+        "scales, orientations, histogram, fft, gain, balance, flatten)");
     expect_failure("stucco.png --pyramid:size=32x32:size=64x64 -o a.png",
         "texsyn ERROR: --pyramid : size is given twice");
     fs::create_directory(dir / "taken.png");

@@ -25,7 +25,7 @@ TEST(Options, ParsesEveryPyramidOptionByName)
     EXPECT_EQ(opt.histogram, HistogramMode::Bins256);
     EXPECT_EQ(t.format(opt),
         "size=640x480:iterations=3:pyramid=laplacian:scales=3:"
-        "orientations=6:histogram=bins256:fft=kiss:gain=1:balance=0");
+        "orientations=6:histogram=bins256:fft=kiss:gain=1:balance=0:flatten=0");
 }
 
 TEST(Options, DefaultsAreThePapers)

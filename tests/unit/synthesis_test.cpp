@@ -84,7 +84,7 @@ TEST(PyramidSynthesis, OutputHasTheRequestedSizeChannelsAndMetadata)
     EXPECT_EQ(out.spec().get_int_attribute("synth:seed"), 11);
     EXPECT_EQ(out.spec().get_string_attribute("synth:options"),
         "size=200x72:iterations=2:pyramid=steerable:scales=3:orientations=4:"
-        "histogram=exact:fft=kiss:gain=1:balance=0");
+        "histogram=exact:fft=kiss:gain=1:balance=0:flatten=0");
 }
 
 TEST(PyramidSynthesis, BitIdenticalForASeedAtAnyThreadCount)

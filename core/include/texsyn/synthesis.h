@@ -49,6 +49,9 @@ struct PyramidOptions {
     /// is scaled by 1 + b cos(2 pi k / K), so b > 0 strengthens orientation 0 (vertical
     /// structure, horizontal frequency) against orientation K/2, b < 0 the opposite.
     std::vector<float> balance;
+    /// 1: divide the sample by its fitted low-order illumination before analysis
+    /// (flatten_illumination, homogeneity.h; Heeger & Bergen 1995 §6). Not the paper's: 0.
+    int flatten = 0;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) after each iteration of each channel, from the

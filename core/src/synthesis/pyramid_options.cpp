@@ -32,6 +32,9 @@ const OptionTable<PyramidOptions>& PyramidOptions::table()
             "orientation-energy balance of each scale, finest first (steerable only): band k of "
             "K is scaled by 1 + b cos(2 pi k/K); b > 0 favours orientation 0 (vertical "
             "structure), b < 0 orientation K/2");
+        t.integer("flatten", &O::flatten, 0, 1,
+            "1 = divide the sample by its fitted lighting gradient before analysis "
+            "(see texsyn --check and docs/homogeneity.md)");
         return t;
     }();
     return t;
@@ -68,6 +71,10 @@ bool PyramidOptions::validate(std::string& error) const
         }
     if (!balance.empty() && pyramid != PyramidKind::Steerable) {
         error = "balance= needs pyramid=steerable (the laplacian pyramid has no orientations)";
+        return false;
+    }
+    if (flatten < 0 || flatten > 1) {
+        error = "flatten=" + std::to_string(flatten) + " is out of range (0..1)";
         return false;
     }
     if (!fft_backend_available(fft)) {
