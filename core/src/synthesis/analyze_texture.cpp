@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include <texsyn/homogeneity.h>
+
 namespace texsyn {
 
 namespace {
@@ -42,6 +44,8 @@ bool analyse(const OIIO::ImageBuf& sample, const PyramidOptions& opt, TextureSta
         error = "sample: " + error;
         return false;
     }
+    if (opt.flatten) // §6: a lighting gradient in the sample makes the output blotchy
+        flatten_illumination(src, opt.nthreads);
     const int sw = src.width(), sh = src.height();
     const int w = opt.width ? opt.width : sw, h = opt.height ? opt.height : sh;
     const int max_scales = max_pyramid_scales(sw, sh);
