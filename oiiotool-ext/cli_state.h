@@ -97,6 +97,10 @@ void run_analyze(CliState& state, const std::string& command, const std::string&
 /// Checks --analyze's modifiers (only the analysis settings are allowed); throws CliError.
 PyramidOptions parse_analyze_options(const std::string& command, const std::string& modifiers);
 
+/// --check: prints the homogeneity report of the top image (texsyn/homogeneity.h) to
+/// stdout, warnings included; leaves the stack unchanged. Never fails on a poor sample.
+void run_check(CliState& state, const std::string& command);
+
 /// --recipe FILE: writes the recipe of the top image (a synthesis of a sample file), with
 /// paths relative to FILE's folder, to a temporary file in pending_outputs.
 void write_recipe(CliState& state, const std::string& filename);

@@ -53,6 +53,9 @@ void print_help()
         "    --analyze[:pyramid=,scales=,orientations=,fft=]\n"
         "                          Replace the current image by its pyramid analysis, to\n"
         "                          write as *.tsa and synthesize from without the sample\n"
+        "    --check               Print how homogeneous the current image is: lighting\n"
+        "                          gradient, local mean and contrast variation, score and\n"
+        "                          warnings (Heeger & Bergen §6). Needs no -o\n"
         "    --pyramid[:name=value...]\n"
         "                          Heeger & Bergen 1995 pyramid synthesis of the current\n"
         "                          image or analysis. Options:\n",
@@ -60,7 +63,8 @@ void print_help()
     print_table(PyramidOptions::table(), PyramidOptions());
     std::printf("\nExample:\n"
                 "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o "
-                "rust_big.exr\n");
+                "rust_big.exr\n"
+                "    texsyn rust.png --check\n");
 }
 
 void print_methods()

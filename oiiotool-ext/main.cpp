@@ -42,7 +42,7 @@ std::pair<std::string, std::string> split_command(const std::string& a)
 
 bool is_command(const std::string& name)
 {
-    return name == "--pyramid" || name == "--analyze";
+    return name == "--pyramid" || name == "--analyze" || name == "--check";
 }
 
 int64_t int_argument(const std::string& option, const std::string& value, int64_t lo, int64_t hi)
@@ -88,11 +88,17 @@ enum class Early { Run, Exit };
 Early parse_globals(CliState& state, const std::vector<std::string>& args)
 {
     std::vector<std::string> inputs, outputs, recipes, colorspaces;
-    // Everything that makes or changes an image must be followed by an -o that writes it.
+    // Everything that makes or changes an image must be followed by an -o that writes it
+    // (or a --check that reports on it).
     size_t last_output = 0;
+    bool check = false;
     for (size_t i = 0; i < args.size(); ++i)
         if (args[i] == "-o" || args[i] == "--recipe")
-            last_output = i + 1;
+            last_output = ++i;
+        else if (split_command(args[i]).first == "--check")
+            last_output = i;
+        else if (takes_argument(args[i]))
+            ++i;
     auto check_written = [&](size_t i) {
         if (last_output > 0 && i > last_output) // no -o at all is reported after the loop
             throw CliError(args[i] + " : has no effect, nothing is written after it (add -o FILE)");
@@ -141,16 +147,21 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             if (!is_command(name))
                 throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
             check_written(i);
-            if (name == "--analyze")
+            if (name == "--check") {
+                if (!modifiers.empty())
+                    throw CliError(name + " : takes no options (got '" + modifiers + "')");
+                check = true;
+            } else if (name == "--analyze") {
                 parse_analyze_options(name, modifiers);
-            else
+            } else {
                 parse_pyramid_options(name, modifiers);
+            }
         } else {
             check_written(i);
             inputs.push_back(a);
         }
     }
-    if (outputs.empty() && recipes.empty() && !args.empty())
+    if (outputs.empty() && recipes.empty() && !check && !args.empty())
         throw CliError("nothing to do: no -o FILE (see texsyn --help)");
     for (const std::string& recipe : recipes) {
         check_output_path("--recipe", recipe, inputs);
@@ -214,6 +225,8 @@ void run(CliState& state, const std::vector<std::string>& args)
                 run_pyramid(state, name, modifiers);
             else if (name == "--analyze")
                 run_analyze(state, name, modifiers);
+            else if (name == "--check")
+                run_check(state, name);
         } else {
             push_input(state, a);
         }

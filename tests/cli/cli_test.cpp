@@ -294,6 +294,7 @@ TEST_F(Cli, HelpVersionAndMethodList)
     EXPECT_EQ(r.status, 0);
     EXPECT_NE(r.out.find("--pyramid"), std::string::npos);
     EXPECT_NE(r.out.find("orientations"), std::string::npos);
+    EXPECT_NE(r.out.find("--check"), std::string::npos);
     r = texsyn("--version");
     EXPECT_EQ(r.status, 0);
     EXPECT_EQ(r.out.find("texsyn "), 0u);
@@ -583,4 +584,91 @@ TEST_F(Cli, BadAnalysisCommandsAndFilesAreRefused)
     expect_failure("good.tsa -o good.tsa",
         "texsyn ERROR: -o good.tsa : refusing to overwrite the input good.tsa",
         { "stucco.png", "junk.tsa", "good.tsa", "cut.tsa" });
+}
+
+namespace {
+
+// A copy of stucco.png lit by a ramp from 0.5 (left) to 1.5 (right), in scene-linear, as a
+// float EXR (which texsyn reads as scene-linear).
+void write_gradient_sample(const fs::path& dir, const std::string& name)
+{
+    OIIO::ImageBuf file;
+    std::string error;
+    ASSERT_TRUE(read_image((dir / "stucco.png").string(), file, error)) << error;
+    PlanarImage lin;
+    ASSERT_TRUE(planes_from_imagebuf(file, lin, error)) << error;
+    auto cc = ColorConfig::load(TEXSYN_BUNDLED_OCIO_CONFIG, error);
+    ASSERT_TRUE(cc->convert(lin, "sRGB - Texture", cc->scene_linear(), error)) << error;
+    for (Plane& p : lin.channels)
+        for (int y = 0; y < p.height(); ++y)
+            for (int x = 0; x < p.width(); ++x)
+                p(x, y) *= 0.5f + (float(x) + 0.5f) / float(p.width());
+    OIIO::ImageBuf out;
+    imagebuf_from_planes(lin, out);
+    ASSERT_TRUE(out.write((dir / name).string(), OIIO::TypeFloat)) << out.geterror();
+}
+
+} // namespace
+
+TEST_F(Cli, CheckReportsOnAHomogeneousSampleWithoutAnOutput)
+{
+    CliRun r = texsyn("stucco.png --check");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(r.out.find("stucco.png (128x128)\n  homogeneity score "), 0u) << r.out;
+    EXPECT_NE(r.out.find("   good (1 = homogeneous; poor below 0.50)\n"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("\n  illumination gradient "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\n  local mean variation "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\n  local contrast variation "), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("warning:"), std::string::npos) << r.out;
+    EXPECT_TRUE(outputs().empty());
+}
+
+TEST_F(Cli, CheckWarnsAboutALightingGradientAndPyramidTakesFlatten)
+{
+    write_gradient_sample(dir, "grad.exr");
+    CliRun r = texsyn("grad.exr --check");
+    ASSERT_EQ(r.status, 0) << r.err; // a poor sample is reported, not an error
+    EXPECT_EQ(r.err, "");
+    EXPECT_NE(r.out.find("   poor (1 = homogeneous; poor below 0.50)\n"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("\nwarning: the lighting varies by "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("brighter towards the right"), std::string::npos) << r.out;
+
+    r = texsyn("grad.exr --pyramid:size=64x64:iterations=2:flatten=1 -d float -o flat.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(read("flat.exr").spec().get_string_attribute("synth:options").find(":flatten=1"),
+        std::string::npos);
+    expect_failure("grad.exr --pyramid:flatten=2 -o out.exr",
+        "texsyn ERROR: --pyramid : flatten=2 is out of range (0..1)",
+        { "stucco.png", "grad.exr", "flat.exr" });
+}
+
+TEST_F(Cli, CheckLeavesTheStackAsItWas)
+{
+    const std::string synth = " --pyramid:size=48x48:iterations=1 -d float -o ";
+    ASSERT_EQ(texsyn("stucco.png" + synth + "a.exr").status, 0);
+    CliRun r = texsyn("stucco.png --check" + synth + "b.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.find("stucco.png (128x128)\n"), 0u) << r.out; // stdout even without -v
+    EXPECT_EQ(OIIO::ImageBufAlgo::computePixelHashSHA1(read("a.exr")),
+        OIIO::ImageBufAlgo::computePixelHashSHA1(read("b.exr")));
+    // After an -o: the report is on the synthesis.
+    r = texsyn("stucco.png" + synth + "c.exr --check");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.find("the synthesis from stucco.png (48x48)\n"), 0u) << r.out;
+}
+
+TEST_F(Cli, CheckNeedsAnImageAndTakesNoOptions)
+{
+    expect_failure(
+        "--check", "texsyn ERROR: --check : no current image (give an input file before it)");
+    expect_failure(
+        "stucco.png --check:tiles=8", "texsyn ERROR: --check : takes no options (got 'tiles=8')");
+    expect_failure("stucco.png --check stucco.png",
+        "texsyn ERROR: stucco.png : has no effect, nothing is written after it (add -o FILE)");
+    expect_failure("stucco.png --analyze --check",
+        "texsyn ERROR: --check : stucco.png is an analysis, not an image (check the sample it "
+        "was made from)");
 }

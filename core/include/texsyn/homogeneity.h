@@ -35,6 +35,9 @@ inline constexpr double homogeneity_max_local_mean_variation = 0.3;
 /// Above this coefficient of variation of the tile contrasts the sample is poor.
 inline constexpr double homogeneity_max_local_contrast_variation = 0.4;
 
+/// A report's score is below this exactly when one measure exceeds its threshold.
+inline constexpr double homogeneity_poor_score = 0.5;
+
 /// The fitted illumination: luminance ≈ sum of coefficients[i] * monomial i of the
 /// normalised coordinates u = (2x+1)/width - 1, v = (2y+1)/height - 1 (both in (-1, 1),
 /// v pointing down like image rows), monomials 1, u, v, u², uv, v² in that order. The
@@ -76,8 +79,8 @@ struct HomogeneityReport {
     double local_contrast_variation = 0.0;
 
     /// (c) 1 = homogeneous. 2^(-b²), b = the largest of the three measures divided by its
-    /// threshold (homogeneity_max_*), so score < 0.5 exactly when one exceeds its
-    /// threshold.
+    /// threshold (homogeneity_max_*), so score < homogeneity_poor_score (0.5) exactly
+    /// when one exceeds its threshold.
     double score = 1.0;
     /// A measure exceeds its threshold: pyramid synthesis will probably look blotchy.
     bool poor = false;
