@@ -26,5 +26,16 @@ for look in "rust_sliders_default|" "rust_gain_coarse|:gain=1,1,2,1" "rust_gain_
     "rust_balance_horizontal|:balance=-0.8,-0.8,-0.8,-0.8"; do
     "$texsyn" --seed 1 "$out/rust.tsa" --pyramid:size=192x192${look#*|} -o "$out/${look%%|*}.png"
 done
+# homogeneity.md: stucco under the issue's 0.5 -> 1.5 ramp (applied in linear), and its
+# synthesis without and with flatten=1.
+tmp=$(mktemp -d)
+oiiotool "$samples/stucco_yellow.png" --colorconvert sRGB linear \
+    --pattern fill:left=0.5,0.5,0.5:right=1.5,1.5,1.5 128x128 3 --mul -d float -o "$tmp/lit.exr"
+oiiotool "$tmp/lit.exr" --colorconvert linear sRGB -d uint8 -o "$out/stucco_lit.png"
+"$texsyn" --seed 3 "$tmp/lit.exr" --pyramid:size=256x256 --tocolorspace sRGB -d uint8 \
+    -o "$out/stucco_lit_plain.png"
+"$texsyn" --seed 3 "$tmp/lit.exr" --pyramid:size=256x256:flatten=1 --tocolorspace sRGB -d uint8 \
+    -o "$out/stucco_lit_flat.png"
+rm -rf "$tmp"
 rm -f "$out/stucco_tile.png" "$out/rust.tsa"
 ls -la "$out"
