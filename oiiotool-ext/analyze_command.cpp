@@ -11,7 +11,8 @@ namespace texsyn::cli {
 namespace {
 
 // The options that shape an analysis; the others only matter to a synthesis.
-const std::vector<std::string> analysis_keys = { "pyramid", "scales", "orientations", "fft" };
+const std::vector<std::string> analysis_keys
+    = { "pyramid", "scales", "orientations", "fft", "flatten" };
 
 } // namespace
 
@@ -24,7 +25,8 @@ PyramidOptions parse_analyze_options(const std::string& command, const std::stri
     for (const auto& [key, value] : pairs)
         if (std::find(analysis_keys.begin(), analysis_keys.end(), key) == analysis_keys.end())
             throw CliError(command + " : " + key
-                + "= is not an analysis option (known: pyramid, scales, orientations, fft; "
+                + "= is not an analysis option (known: pyramid, scales, orientations, fft, "
+                  "flatten; "
                   "give synthesis options to --pyramid)");
     return parse_pyramid_options(command, modifiers);
 }

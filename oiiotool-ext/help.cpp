@@ -50,7 +50,7 @@ void print_help()
         "                          (atomically)\n"
         "    --recipe FILE.texsyn  Write the recipe of the current synthesis: OIIO tools\n"
         "                          open it as an image with texsyn's format plugin\n"
-        "    --analyze[:pyramid=,scales=,orientations=,fft=]\n"
+        "    --analyze[:pyramid=,scales=,orientations=,fft=,flatten=]\n"
         "                          Replace the current image by its pyramid analysis, to\n"
         "                          write as *.tsa and synthesize from without the sample\n"
         "    --check               Print how homogeneous the current image is: lighting\n"

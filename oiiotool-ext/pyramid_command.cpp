@@ -44,6 +44,9 @@ void run_pyramid(CliState& state, const std::string& command, const std::string&
         opt.progress = show_progress;
 
     StackImage sample = state.pop_sample(command);
+    if (sample.statistics && opt.flatten) // an analysis keeps no pixels to divide
+        throw CliError(command + " : flatten=1 needs a sample, and " + sample.source
+            + " is an analysis (flatten when analysing: --analyze:flatten=1)");
     StackImage result;
     result.source = sample.source;
     result.input_colorspace = sample.input_colorspace;

@@ -556,7 +556,7 @@ TEST_F(Cli, BadAnalysisCommandsAndFilesAreRefused)
 {
     expect_failure("stucco.png --analyze:iterations=3 -o a.tsa",
         "texsyn ERROR: --analyze : iterations= is not an analysis option (known: pyramid, "
-        "scales, orientations, fft; give synthesis options to --pyramid)");
+        "scales, orientations, fft, flatten; give synthesis options to --pyramid)");
     expect_failure("stucco.png --analyze -o a.exr",
         "texsyn ERROR: -o a.exr : the current item is an analysis; write it as *.tsa, or "
         "synthesize from it first (--pyramid)");
@@ -636,13 +636,25 @@ TEST_F(Cli, CheckWarnsAboutALightingGradientAndPyramidTakesFlatten)
     EXPECT_NE(r.out.find("\nwarning: the lighting varies by "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("brighter towards the right"), std::string::npos) << r.out;
 
-    r = texsyn("grad.exr --pyramid:size=64x64:iterations=2:flatten=1 -d float -o flat.exr");
+    r = texsyn("grad.exr --pyramid:size=128x128:iterations=2:flatten=1 -d float -o flat.exr");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(read("flat.exr").spec().get_string_attribute("synth:options").find(":flatten=1"),
         std::string::npos);
+    // An analysis is flattened when it is made; a synthesis from one cannot flatten.
+    r = texsyn("grad.exr --analyze:flatten=1 -o flat.tsa");
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = texsyn("flat.tsa --pyramid:size=128x128:iterations=2 -d float -o from_tsa.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(OIIO::ImageBufAlgo::computePixelHashSHA1(read("from_tsa.exr")),
+        OIIO::ImageBufAlgo::computePixelHashSHA1(read("flat.exr")));
+    const std::initializer_list<std::string> files
+        = { "stucco.png", "grad.exr", "flat.exr", "flat.tsa", "from_tsa.exr" };
     expect_failure("grad.exr --pyramid:flatten=2 -o out.exr",
-        "texsyn ERROR: --pyramid : flatten=2 is out of range (0..1)",
-        { "stucco.png", "grad.exr", "flat.exr" });
+        "texsyn ERROR: --pyramid : flatten=2 is out of range (0..1)", files);
+    expect_failure("flat.tsa --pyramid:flatten=1 -o out.exr",
+        "texsyn ERROR: --pyramid : flatten=1 needs a sample, and flat.tsa is an analysis (flatten "
+        "when analysing: --analyze:flatten=1)",
+        files);
 }
 
 TEST_F(Cli, CheckLeavesTheStackAsItWas)
