@@ -308,3 +308,22 @@ TEST(AnalysisFileIo, MissingFilesAndNamesAreReported)
     EXPECT_TRUE(is_analysis_filename("a/b/rust.TSA"));
     EXPECT_FALSE(is_analysis_filename("rust.tsa.png"));
 }
+
+TEST(AnalysisFileSynthesis, AFlattenedAnalysisSaysSoInTheSynthesisOptions)
+{
+    PyramidOptions opt;
+    opt.scales = 2;
+    opt.flatten = 1;
+    TextureStatistics stats;
+    std::string error;
+    ASSERT_TRUE(
+        parse_statistics(file_bytes(analysis_of(small_sample(48), opt)), "x.tsa", stats, error))
+        << error;
+    EXPECT_TRUE(stats.flattened);
+    PyramidOptions synth;
+    synth.iterations = 1;
+    OIIO::ImageBuf out;
+    ASSERT_TRUE(synthesize_from_statistics(out, stats, synth)) << out.geterror();
+    EXPECT_NE(
+        out.spec().get_string_attribute("synth:options").find(":flatten=1"), std::string::npos);
+}

@@ -40,6 +40,7 @@ struct TextureStatistics {
     std::string colorspace;                 ///< the sample's colour space before linearisation
     std::string source;                     ///< the sample's file name, if known
     std::string sample_format; ///< the sample file's pixel type ("uint8", …), if known
+    bool flattened = false;    ///< the sample\'s lighting was divided out (flatten=1)
     ColorTransform color;      ///< §3.5 PCA of the colour channels
     std::vector<ComponentStatistics> components; ///< one per channel, decorrelated
     std::vector<QuantileTable> channels;         ///< per sample channel (the final match)

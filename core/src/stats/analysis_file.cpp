@@ -69,7 +69,8 @@ nlohmann::ordered_json header_of(const TextureStatistics& s)
     nlohmann::ordered_json j;
     j["version"] = analysis_file_version;
     j["sample"] = { { "width", s.sample_width }, { "height", s.sample_height },
-        { "source", s.source }, { "colorspace", s.colorspace }, { "format", s.sample_format } };
+        { "source", s.source }, { "colorspace", s.colorspace }, { "format", s.sample_format },
+        { "flattened", s.flattened } };
     j["pyramid"] = { { "kind", pyramid_kind_name(s.pyramid) }, { "scales", s.scales },
         { "orientations", s.orientations }, { "bands", s.band_names } };
     j["channels"] = s.channel_names;
@@ -126,6 +127,7 @@ void parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<siz
     s.source = sample.at("source").get<std::string>();
     s.colorspace = sample.at("colorspace").get<std::string>();
     s.sample_format = sample.at("format").get<std::string>();
+    s.flattened = sample.at("flattened").get<bool>();
     if (s.sample_width < 16 || s.sample_height < 16 || s.sample_width > max_side
         || s.sample_height > max_side)
         fail("sample size " + std::to_string(s.sample_width) + "x" + std::to_string(s.sample_height)

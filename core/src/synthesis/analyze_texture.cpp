@@ -82,6 +82,7 @@ bool analyse(const OIIO::ImageBuf& sample, const PyramidOptions& opt, TextureSta
     s.band_names = analysis->band_names();
     s.channel_names = src.channel_names;
     s.alpha_channel = src.alpha_channel;
+    s.flattened = opt.flatten != 0;
     s.unassociated_alpha = sample.spec().get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
     for (const Plane& channel : src.channels)
         s.channels.emplace_back(channel);

@@ -151,6 +151,7 @@ bool synthesize(OIIO::ImageBuf& dst, const TextureStatistics& stats, const Pyram
     resolved.width = w;
     resolved.height = h;
     resolved.scales = scales;
+    resolved.flatten = stats.flattened ? 1 : 0;
     OIIO::ImageSpec& spec = dst.specmod();
     spec.attribute("synth:version", version());
     spec.attribute("synth:method", start ? "transfer" : "pyramid");
