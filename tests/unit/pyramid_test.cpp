@@ -179,8 +179,8 @@ TEST(Laplacian3D, RejectsBadArguments)
 
 TEST(Laplacian3D, BandsAndPerfectReconstruction)
 {
-    for (auto [w, h, d] : std::vector<std::tuple<int, int, int>> {
-             { 32, 32, 32 }, { 40, 24, 16 }, { 17, 23, 19 } }) {
+    for (auto [w, h, d] :
+        std::vector<std::tuple<int, int, int>> { { 32, 32, 32 }, { 40, 24, 16 }, { 17, 23, 19 } }) {
         auto pyr = make_laplacian_pyramid_3d(w, h, d, 3);
         ASSERT_TRUE(pyr);
         EXPECT_EQ(pyr->band_names(), (std::vector<std::string> { "L0", "L1", "L2", "lowpass" }));

@@ -202,8 +202,7 @@ TEST_F(VolumeFiles, SliceExrReadsBackThroughOiio)
     int parts = 0;
     while (in->seek_subimage(parts, 0)) {
         const OIIO::ImageSpec& spec = in->spec();
-        EXPECT_EQ(spec.get_string_attribute("oiio:subimagename"),
-            volume_exr_part_name(parts, d));
+        EXPECT_EQ(spec.get_string_attribute("oiio:subimagename"), volume_exr_part_name(parts, d));
         EXPECT_EQ(spec.width, w);
         EXPECT_EQ(spec.height, h);
         EXPECT_EQ(spec.full_width, w);

@@ -106,7 +106,8 @@ public:
 
     /// Decomposes `volume` (width x height x depth) into nbands() volumes (resized as
     /// needed).
-    virtual void build(const Volume& volume, std::vector<Volume>& bands, int nthreads = 0) const = 0;
+    virtual void build(
+        const Volume& volume, std::vector<Volume>& bands, int nthreads = 0) const = 0;
     /// Reconstructs the volume from bands shaped as build() makes them.
     virtual void collapse(
         const std::vector<Volume>& bands, Volume& volume, int nthreads = 0) const = 0;

@@ -135,8 +135,8 @@ struct SolidOptions {
     int depth = 0;
     int iterations = 5; ///< §3.3: "about 5 iterations"
     SolidPyramid pyramid = SolidPyramid::Combined;
-    int scales = 0; ///< 0 = the most that keeps the coarsest band of the sample and of the
-                    ///< block's smallest side >= 8 px, at least 1
+    int scales = 0;       ///< 0 = the most that keeps the coarsest band of the sample and of the
+                          ///< block's smallest side >= 8 px, at least 1
     int orientations = 4; ///< steerable bands per scale, 1..8 (combined only)
     HistogramMode histogram = HistogramMode::Exact;
     FftBackend fft = FftBackend::Kiss;
@@ -176,8 +176,8 @@ size_t solid_memory_estimate(int width, int height, int depth, int nchannels);
 /// NaN/Inf pixels or is too small for the pyramid (the message gives the largest `scales`
 /// it allows), the block's smallest side is under 2^scales, or the block would need more
 /// memory than the machine has (checked before allocating; the message gives the amount).
-bool solid_synthesize(PlanarVolume& dst, const OIIO::ImageBuf& sample, const SolidOptions& opt,
-    std::string& error);
+bool solid_synthesize(
+    PlanarVolume& dst, const OIIO::ImageBuf& sample, const SolidOptions& opt, std::string& error);
 
 /// texsyn's version string, e.g. "0.1.0".
 const char* version();

@@ -110,8 +110,8 @@ bool write_volume_vdb(const std::string& filename, const PlanarVolume& v, std::s
 /// alpha as OpenEXR stores it. All parts share one display window and carry
 /// `v.attributes`, so stock `oiiotool out.exr --subimage z0005 -o slice.png` extracts a
 /// slice. Fails (false, "FILE: reason") if the file cannot be written.
-bool write_volume_exr(const std::string& filename, const PlanarVolume& v, OIIO::TypeDesc format,
-    std::string& error);
+bool write_volume_exr(
+    const std::string& filename, const PlanarVolume& v, OIIO::TypeDesc format, std::string& error);
 
 /// The part name of z slice `z` in a volume `depth` slices deep, e.g. "z0005".
 std::string volume_exr_part_name(int z, int depth);

@@ -29,8 +29,8 @@ namespace {
 
 // Parses "AxBx…" with exactly `n` non-negative integers into `dims`; then checks each is in
 // [1, hi]. `example` is a well-formed size for the message.
-bool parse_dims(std::string_view name, std::string_view text, size_t n, int hi,
-    const char* example, int64_t* dims, std::string& error)
+bool parse_dims(std::string_view name, std::string_view text, size_t n, int hi, const char* example,
+    int64_t* dims, std::string& error)
 {
     std::string_view rest = text;
     std::string ignored;

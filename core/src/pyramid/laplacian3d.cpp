@@ -18,8 +18,8 @@ using detail::Taps;
 // Resamples along x with tx, y with ty and z with tz: out is tx.size() x ty.size() x
 // tz.size(). Each pass runs over independent rows or slabs, so the split over threads never
 // changes a value.
-void resample(const Volume& in, const Taps& tx, const Taps& ty, const Taps& tz, Volume& out,
-    int nthreads)
+void resample(
+    const Volume& in, const Taps& tx, const Taps& ty, const Taps& tz, Volume& out, int nthreads)
 {
     const int w = tx.size(), h = ty.size(), d = tz.size();
     const int ih = in.height(), id = in.depth();
@@ -50,8 +50,8 @@ void resample(const Volume& in, const Taps& tx, const Taps& ty, const Taps& tz, 
         int64_t(0), int64_t(d),
         [&](int64_t begin, int64_t end) {
             for (int64_t z = begin; z < end; ++z)
-                detail::filter_rows(along_y.data(), size_t(w) * size_t(h), tz, int(z),
-                    out.slab(int(z)));
+                detail::filter_rows(
+                    along_y.data(), size_t(w) * size_t(h), tz, int(z), out.slab(int(z)));
         },
         opt);
 }
@@ -78,8 +78,8 @@ public:
 
     void build(const Volume& volume, std::vector<Volume>& bands, int nthreads) const override
     {
-        assert(volume.width() == m_width && volume.height() == m_height
-            && volume.depth() == m_depth);
+        assert(
+            volume.width() == m_width && volume.height() == m_height && volume.depth() == m_depth);
         detail::laplacian_build(
             volume, m_levels.size(), bands,
             [&](size_t s, const Volume& in, Volume& out) {

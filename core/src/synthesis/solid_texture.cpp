@@ -38,8 +38,8 @@ std::pair<int, int> slice_size(SliceAxis axis, int w, int h, int d)
     return { h, d };
 }
 
-bool make_plan(const SolidOptions& opt, int w, int h, int d, int scales, SolidPlan& plan,
-    std::string& error)
+bool make_plan(
+    const SolidOptions& opt, int w, int h, int d, int scales, SolidPlan& plan, std::string& error)
 {
     plan.laplacian = make_laplacian_pyramid_3d(w, h, d, scales);
     if (opt.pyramid == SolidPyramid::Laplacian)
@@ -84,8 +84,7 @@ void add_steerable_solid(const Volume& image, SliceAxis axis, const Pyramid& pyr
             extract_slice(image, axis, int(i), slice);
             pyramid.transform_bands(
                 slice, bands,
-                [&](int b, Plane& band) { match_histogram(band, tables[size_t(b)], mode, 1); },
-                1);
+                [&](int b, Plane& band) { match_histogram(band, tables[size_t(b)], mode, 1); }, 1);
             add_slice(slice, axis, int(i), sum);
         },
         OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
@@ -140,10 +139,9 @@ bool synthesize(
     const int min_side = std::min({ w, h, d });
     // One `scales` for both analyses and every pyramid: the most that the sample and the
     // block's smallest slice side allow, as the 2-D method does for the sample and output.
-    const int scales = opt.scales ? opt.scales
-                                  : std::max(1,
-                                      std::min(max_pyramid_scales(sw, sh),
-                                          max_pyramid_scales(min_side, min_side)));
+    const int scales = opt.scales
+        ? opt.scales
+        : std::max(1, std::min(max_pyramid_scales(sw, sh), max_pyramid_scales(min_side, min_side)));
 
     PyramidOptions analysis;
     analysis.pyramid = PyramidKind::Laplacian;
@@ -168,8 +166,8 @@ bool synthesize(
         return false;
     }
     if (min_side < (1 << scales)) {
-        error = size + " is too small for " + std::to_string(scales) + " scales (each side at least "
-            + std::to_string(1 << scales) + ")";
+        error = size + " is too small for " + std::to_string(scales)
+            + " scales (each side at least " + std::to_string(1 << scales) + ")";
         return false;
     }
     SolidPlan plan;
@@ -204,8 +202,8 @@ bool synthesize(
     recorrelate(planes, lap.color, opt.nthreads);
     swap_planes(out, planes);
     for (int c = 0; c < nc; ++c)
-        match_histogram(out.channels[size_t(c)].voxels(), lap.channels[size_t(c)], opt.histogram,
-            opt.nthreads);
+        match_histogram(
+            out.channels[size_t(c)].voxels(), lap.channels[size_t(c)], opt.histogram, opt.nthreads);
 
     SolidOptions resolved = opt;
     resolved.width = w;

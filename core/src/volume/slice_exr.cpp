@@ -26,8 +26,8 @@ PlanarImage z_slice(const PlanarVolume& v, int z)
 
 } // namespace
 
-bool write_volume_exr(const std::string& filename, const PlanarVolume& v, OIIO::TypeDesc format,
-    std::string& error)
+bool write_volume_exr(
+    const std::string& filename, const PlanarVolume& v, OIIO::TypeDesc format, std::string& error)
 {
     std::vector<OIIO::ImageSpec> specs;
     for (int z = 0; z < v.depth(); ++z) {

@@ -18,8 +18,8 @@ namespace {
 
 openvdb::CoordBBox block_bounds(const PlanarVolume& v)
 {
-    return openvdb::CoordBBox(openvdb::Coord(0, 0, 0),
-        openvdb::Coord(v.width() - 1, v.height() - 1, v.depth() - 1));
+    return openvdb::CoordBBox(
+        openvdb::Coord(0, 0, 0), openvdb::Coord(v.width() - 1, v.height() - 1, v.depth() - 1));
 }
 
 // Dense x-fastest values into a grid whose every voxel of the block is active: copyFromDense
@@ -56,8 +56,7 @@ openvdb::Vec3SGrid::Ptr colour_grid(const openvdb::CoordBBox& bbox, const Planar
     const Volume* b = ncolor == 1 ? &r : ncolor >= 3 ? &v.channels[2] : nullptr;
     std::vector<openvdb::Vec3s> rgb(r.size());
     for (size_t i = 0; i < rgb.size(); ++i)
-        rgb[i] = openvdb::Vec3s(
-            r.data()[i], g ? g->data()[i] : 0.0f, b ? b->data()[i] : 0.0f);
+        rgb[i] = openvdb::Vec3s(r.data()[i], g ? g->data()[i] : 0.0f, b ? b->data()[i] : 0.0f);
     auto grid = dense_grid<openvdb::Vec3SGrid>(bbox, rgb.data(), "Cd");
     grid->setVectorType(openvdb::VEC_INVARIANT);
     return grid;
