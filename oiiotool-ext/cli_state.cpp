@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cli_state.h"
 
+#include <cstdio>
+
 namespace texsyn::cli {
 
 const ColorConfig& CliState::colors()
@@ -13,6 +15,17 @@ const ColorConfig& CliState::colors()
     }
     return *m_colors;
 }
+
+std::function<void(float)> progress_reporter(const std::string& command)
+{
+    return [command](float fraction) {
+        std::fprintf(stderr, "\rtexsyn: %s %3d%%", command.c_str(), int(fraction * 100.0f + 0.5f));
+        std::fflush(stderr);
+    };
+}
+
+const char* const solid_input_message
+    = "the current image is a solid texture (from --solid); it needs a 2-D image";
 
 StackImage& CliState::top(const std::string& command)
 {
@@ -31,6 +44,8 @@ StackImage CliState::pop(const std::string& command)
 
 StackImage CliState::pop_sample(const std::string& command)
 {
+    if (top(command).volume)
+        throw CliError(command + " : " + solid_input_message);
     StackImage img = std::move(top(command));
     stack.pop_back();
     return img;

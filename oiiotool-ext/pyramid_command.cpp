@@ -8,40 +8,13 @@
 
 namespace texsyn::cli {
 
-namespace {
-
-void show_progress(float fraction)
-{
-    std::fprintf(stderr, "\rtexsyn: --pyramid %3d%%", int(fraction * 100.0f + 0.5f));
-    std::fflush(stderr);
-}
-
-} // namespace
-
-PyramidOptions parse_pyramid_options(const std::string& command, const std::string& modifiers)
-{
-    PyramidOptions opt;
-    std::vector<std::pair<std::string, std::string>> pairs;
-    std::string error;
-    if (!split_option_string(modifiers, pairs, error))
-        throw CliError(command + " : " + error);
-    for (size_t i = 0; i < pairs.size(); ++i) {
-        for (size_t j = 0; j < i; ++j)
-            if (pairs[j].first == pairs[i].first)
-                throw CliError(command + " : " + pairs[i].first + " is given twice");
-        if (!PyramidOptions::table().set(opt, pairs[i].first, pairs[i].second, error))
-            throw CliError(command + " : " + error);
-    }
-    return opt;
-}
-
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers)
 {
-    PyramidOptions opt = parse_pyramid_options(command, modifiers);
+    PyramidOptions opt = parse_command_options<PyramidOptions>(command, modifiers);
     opt.seed = state.seed;
     opt.nthreads = state.threads;
     if (state.progress)
-        opt.progress = show_progress;
+        opt.progress = progress_reporter(command);
 
     StackImage sample = state.pop_sample(command);
     if (sample.statistics && opt.flatten) // an analysis keeps no pixels to divide

@@ -89,6 +89,24 @@ std::vector<double> slice_band_variances(const Volume& v, SliceAxis axis, int sc
     return var;
 }
 
+// Mean W1 between the sample and its own n x n windows (at a stride of n/4): how far a
+// slice-sized piece of the texture itself strays from the whole sample's histogram.
+double window_w1(const Plane& sample, int n)
+{
+    const QuantileTable whole(sample);
+    double sum = 0.0;
+    int count = 0;
+    for (int y0 = 0; y0 + n <= sample.height(); y0 += n / 4)
+        for (int x0 = 0; x0 + n <= sample.width(); x0 += n / 4) {
+            Plane window(n, n);
+            for (int y = 0; y < n; ++y)
+                std::copy_n(sample.row(y0 + y) + x0, n, window.row(y));
+            sum += wasserstein1(QuantileTable(window), whole);
+            ++count;
+        }
+    return sum / count;
+}
+
 } // namespace
 
 TEST(SolidSynthesis, OutputHasTheRequestedSizeChannelsAndMetadata)
@@ -122,21 +140,28 @@ TEST(SolidSynthesis, SlicesAlongEveryAxisLookLikeTheSample)
     for (int c = 0; c < 3; ++c) {
         const Volume& ch = v.channels[size_t(c)];
         const QuantileTable target(s.channels[size_t(c)]);
+        const double windows = window_w1(s.channels[size_t(c)], n);
         // The whole block (every axis's slices pooled) has the sample's histogram: the
         // last step of the synthesis matches it exactly, so only quantile interpolation
         // between the sample's 16K and the block's 262K values remains.
         EXPECT_LT(wasserstein1(QuantileTable(ch.voxels()), target), 0.001) << "channel " << c;
+        std::printf("channel %d: sample's own %dx%d windows: mean W1 %.4f\n", c, n, n, windows);
         std::vector<double> variances[3];
         for (int a = 0; a < 3; ++a) {
             const SliceAxis axis = kAxes[a];
-            // Single slices, 4096 voxels each, vary about the sample's histogram.
+            // Single slices vary about the sample's histogram like the sample's own windows
+            // of their size do (the coarsest scale's blobs are a good part of a slice): the
+            // axes' mean within 2x of that, and the slices of all axes pooled (the block)
+            // within the W1 < 0.01.
             double mean_w1 = 0.0;
             Plane slice;
             for (int i = 0; i < n; ++i) {
                 extract_slice(ch, axis, i, slice);
                 mean_w1 += wasserstein1(QuantileTable(slice), target) / n;
             }
-            EXPECT_LT(mean_w1, 0.01) << "channel " << c << " axis " << slice_axis_name(axis);
+            EXPECT_LT(mean_w1, 2.0 * windows)
+                << "channel " << c << " axis " << slice_axis_name(axis) << " sample windows "
+                << windows;
             // Seamless: the step across the wrap is like the steps inside.
             double interior = 0.0;
             for (int i = 0; i + 1 < n; ++i)

@@ -163,8 +163,11 @@ size_t solid_memory_estimate(int width, int height, int depth, int nchannels);
 /// component: seeded uniform noise (stream = channel, index = voxel index), its histogram
 /// matched, then `iterations` times: the 3-D Laplacian pyramid (circular) with every band
 /// matched to the sample's 2-D Laplacian band; for `combined` also every xy, xz and yz
-/// slice through a 2-D steerable pyramid with its bands matched to the sample's steerable
-/// bands, and the four solids averaged; then the histogram matched again. Alpha is
+/// slice through a 2-D steerable pyramid with its oriented bands matched to the sample's
+/// steerable bands, and the four solids averaged; then the histogram matched again. (The
+/// paper matches the slices' high-pass and low-pass residuals too; texsyn leaves them to
+/// the 3-D Laplacian pyramid, because matching them slice by slice streaks the block along
+/// the axes: docs/solid.md.) Alpha is
 /// synthesized as its own channel. After undoing the decorrelation each channel is
 /// matched to the sample's once more. The block tiles seamlessly along all three axes.
 ///

@@ -94,6 +94,12 @@ struct PlanarVolume {
     int ncolor() const { return alpha_channel >= 0 ? alpha_channel : nchannels(); }
 };
 
+/// Swaps the voxels of every channel of `v` with the planes of `img` (resized to as many
+/// channels): each volume's width x (height*depth) plane goes to `img` and back with a
+/// second call, so pointwise image operations (colour conversion, decorrelation) apply to
+/// volumes without copying. Between the two calls `v`'s channels hold no voxels.
+void swap_voxel_planes(PlanarVolume& v, PlanarImage& img);
+
 /// Writes `v` as an OpenVDB file (atomically: temporary file, then rename) that stock
 /// tools read: one dense Vec3f grid "Cd" from the first three colour channels (a grey
 /// volume fills all three from its one channel; a missing third is 0), a float grid

@@ -71,8 +71,12 @@ void laplacian_solid(const Volume& image, const VolumePyramid& pyramid,
 }
 
 // Adds the steerable solid of one axis to `sum`: every slice of `image` perpendicular to
-// `axis` through the 2-D steerable pyramid with its bands matched to the sample's. One
-// slice per task; slices of one axis are disjoint, so the sum does not depend on threads.
+// `axis` through the 2-D steerable pyramid with its oriented bands matched to the sample's.
+// The two unoriented residuals are left as they are: the 3-D Laplacian pyramid already
+// matches the finest and coarsest scales isotropically, and matching them again slice by
+// slice (a 128^2 slice's low-pass is 8x8) changes each slice on its own, which shows as
+// one-voxel-thin streaks along the axes in the other slices. One slice per task; slices of
+// one axis are disjoint, so the sum does not depend on threads.
 void add_steerable_solid(const Volume& image, SliceAxis axis, const Pyramid& pyramid,
     const std::vector<QuantileTable>& tables, HistogramMode mode, int nthreads, Volume& sum)
 {
@@ -84,7 +88,11 @@ void add_steerable_solid(const Volume& image, SliceAxis axis, const Pyramid& pyr
             extract_slice(image, axis, int(i), slice);
             pyramid.transform_bands(
                 slice, bands,
-                [&](int b, Plane& band) { match_histogram(band, tables[size_t(b)], mode, 1); }, 1);
+                [&](int b, Plane& band) {
+                    if (b > 0 && b + 1 < pyramid.nbands())
+                        match_histogram(band, tables[size_t(b)], mode, 1);
+                },
+                1);
             add_slice(slice, axis, int(i), sum);
         },
         OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
@@ -111,15 +119,6 @@ void match_solid(Volume& image, const ComponentTables& t, const SolidPlan& plan,
         match_histogram(image.voxels(), t.pixels, opt.histogram, opt.nthreads);
         iteration_done(it + 1);
     }
-}
-
-// The volumes' voxels as the planes of a PlanarImage (and back), for the pointwise colour
-// transforms of color.h.
-void swap_planes(PlanarVolume& v, PlanarImage& img)
-{
-    img.channels.resize(v.channels.size());
-    for (size_t c = 0; c < v.channels.size(); ++c)
-        std::swap(img.channels[c], v.channels[c].voxels());
 }
 
 bool synthesize(
@@ -198,9 +197,9 @@ bool synthesize(
     // Back to the sample's channels, then one last match of each channel's histogram to the
     // sample's, which recorrelation alone does not guarantee.
     PlanarImage planes;
-    swap_planes(out, planes);
+    swap_voxel_planes(out, planes);
     recorrelate(planes, lap.color, opt.nthreads);
-    swap_planes(out, planes);
+    swap_voxel_planes(out, planes);
     for (int c = 0; c < nc; ++c)
         match_histogram(
             out.channels[size_t(c)].voxels(), lap.channels[size_t(c)], opt.histogram, opt.nthreads);

@@ -77,6 +77,13 @@ void add_slice(const Plane& slice, SliceAxis axis, int index, Volume& v)
     });
 }
 
+void swap_voxel_planes(PlanarVolume& v, PlanarImage& img)
+{
+    img.channels.resize(v.channels.size());
+    for (size_t c = 0; c < v.channels.size(); ++c)
+        std::swap(img.channels[c], v.channels[c].voxels());
+}
+
 std::string volume_exr_part_name(int z, int depth)
 {
     int digits = 4;
