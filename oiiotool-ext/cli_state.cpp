@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cli_state.h"
 
+#include <chrono>
 #include <cstdio>
 
 namespace texsyn::cli {
@@ -26,6 +27,30 @@ std::function<void(float)> progress_reporter(const std::string& command)
 
 const char* const solid_input_message
     = "the current image is a solid texture (from --solid); it needs a 2-D image";
+
+StackImage synthesis_of(const StackImage& sample)
+{
+    StackImage result;
+    result.source = sample.source;
+    result.input_colorspace = sample.input_colorspace;
+    result.input_format = sample.input_format;
+    result.output_colorspace = sample.output_colorspace;
+    return result;
+}
+
+double seconds_now()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+void report_synthesis(const CliState& state, const std::string& command, const std::string& options,
+    const std::string& source, double start)
+{
+    if (state.verbose)
+        std::fprintf(stderr, "texsyn: %s %s from %s in %.2f s\n", command.c_str(), options.c_str(),
+            source.c_str(), seconds_now() - start);
+}
 
 StackImage& CliState::top(const std::string& command)
 {

@@ -112,6 +112,31 @@ extern const char* const solid_input_message;
 /// A progress callback that shows "texsyn: COMMAND  NN%" on stderr.
 std::function<void(float)> progress_reporter(const std::string& command);
 
+/// A synthesis command's options: its modifiers parsed with T's table, plus the run's
+/// seed, thread count and (on a terminal or with -v) progress display.
+template <class T>
+T synthesis_options(const CliState& state, const std::string& command, const std::string& modifiers)
+{
+    T opt = parse_command_options<T>(command, modifiers);
+    opt.seed = state.seed;
+    opt.nthreads = state.threads;
+    if (state.progress)
+        opt.progress = progress_reporter(command);
+    return opt;
+}
+
+/// The stack entry for a synthesis from `sample`: its source file, colour spaces and pixel
+/// type carried over, no pixels yet.
+StackImage synthesis_of(const StackImage& sample);
+
+/// Ends a synthesis command's progress line and, with -v, reports "texsyn: COMMAND OPTIONS
+/// from SOURCE in N s" for a run that started at `start` (a steady_clock time in seconds).
+void report_synthesis(const CliState& state, const std::string& command, const std::string& options,
+    const std::string& source, double start);
+
+/// Now, in seconds of std::chrono::steady_clock.
+double seconds_now();
+
 /// --pyramid[:name=value…]: pops a sample, pushes the synthesis.
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers);
 

@@ -88,10 +88,21 @@ protected:
     void expect_failure(const std::string& args, const std::string& first_line,
         std::initializer_list<std::string> inputs = { "stucco.png" })
     {
+        expect_failure_starting(args, first_line, inputs, true);
+    }
+
+    // expect_failure for a message whose end depends on the machine (memory sizes): the
+    // first stderr line starts with `prefix` (or is it, with `whole_line`).
+    void expect_failure_starting(const std::string& args, const std::string& prefix,
+        std::initializer_list<std::string> inputs = { "stucco.png" }, bool whole_line = false)
+    {
         std::string before = slurp(dir / "stucco.png");
         CliRun r = texsyn(args);
         EXPECT_EQ(r.status, 1) << args;
-        EXPECT_EQ(r.first_err_line(), first_line) << args;
+        if (whole_line)
+            EXPECT_EQ(r.first_err_line(), prefix) << args;
+        else
+            EXPECT_EQ(r.first_err_line().find(prefix), 0u) << args << ": " << r.err;
         EXPECT_TRUE(outputs(inputs).empty()) << args << ": left " << outputs(inputs)[0];
         EXPECT_EQ(slurp(dir / "stucco.png"), before) << args << " modified its input";
     }
@@ -378,13 +389,8 @@ TEST_F(Cli, MalformedCommandsAndOptionsAreRefused)
 
 TEST_F(Cli, ImpossibleSizesAreRefusedBeforeAllocating)
 {
-    CliRun r = texsyn("stucco.png --pyramid:size=200000x200000 -o out.exr");
-    EXPECT_EQ(r.status, 1);
-    EXPECT_EQ(
-        r.first_err_line().find("texsyn ERROR: --pyramid : size=200000x200000 would need about "),
-        0u)
-        << r.err;
-    EXPECT_TRUE(outputs().empty());
+    expect_failure_starting("stucco.png --pyramid:size=200000x200000 -o out.exr",
+        "texsyn ERROR: --pyramid : size=200000x200000 would need about ");
     write_sample("tiny.exr", 3, OIIO::TypeFloat);
     expect_failure("tiny.exr --pyramid:scales=4 -o out.exr",
         "texsyn ERROR: --pyramid : scales=4 is too many for a 32x32 sample (at most 2)",
@@ -747,13 +753,8 @@ TEST_F(Cli, BadSolidRequestsAreRefused)
         "texsyn ERROR: --recipe out.texsyn : recipes describe 2-D syntheses; the current "
         "image is a solid texture");
 
-    CliRun r = texsyn("stucco.png --solid:size=16384x16384x16384 -o out.vdb");
-    EXPECT_EQ(r.status, 1);
-    EXPECT_EQ(
-        r.first_err_line().find("texsyn ERROR: --solid : size=16384x16384x16384 would need about "),
-        0u)
-        << r.err;
-    EXPECT_TRUE(outputs().empty());
+    expect_failure_starting("stucco.png --solid:size=16384x16384x16384 -o out.vdb",
+        "texsyn ERROR: --solid : size=16384x16384x16384 would need about ");
 
     OIIO::ImageBuf tiny(OIIO::ImageSpec(8, 8, 3, OIIO::TypeFloat));
     ASSERT_TRUE(tiny.write((dir / "tiny.exr").string()));

@@ -226,16 +226,8 @@ TEST(SolidSynthesis, LaplacianModeAndNonCubicSizes)
 
 TEST(SolidSynthesis, AlphaIsSynthesizedAsItsOwnChannel)
 {
-    PlanarImage s = planes_of(linear_sample("stucco_yellow.png"));
-    Plane alpha(128, 128);
-    for (int y = 0; y < 128; ++y)
-        for (int x = 0; x < 128; ++x)
-            alpha(x, y) = 0.5f + 0.5f * std::sin(0.3f * x) * std::cos(0.2f * y);
-    s.channels.push_back(alpha);
-    s.channel_names.push_back("A");
-    s.alpha_channel = 3;
-    OIIO::ImageBuf sample;
-    imagebuf_from_planes(s, sample);
+    Plane alpha;
+    const OIIO::ImageBuf sample = test::stucco_with_alpha(alpha);
     const PlanarVolume v = solid(sample, options(32, 32, 32, 2));
     ASSERT_EQ(v.nchannels(), 4);
     EXPECT_EQ(v.alpha_channel, 3);

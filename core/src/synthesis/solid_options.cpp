@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-#include <texsyn/synthesis.h>
+#include "synthesis_pvt.h"
 
 namespace texsyn {
+
+namespace {
+constexpr int kMaxSide = 16384; // per side of the block; memory refuses far less anyway
+}
 
 const char* solid_pyramid_name(SolidPyramid kind)
 {
@@ -13,12 +17,11 @@ const OptionTable<SolidOptions>& SolidOptions::table()
     using O = SolidOptions;
     static const OptionTable<O> t = [] {
         OptionTable<O> t;
-        t.size3("size", &O::width, &O::height, &O::depth, 16384,
+        t.size3("size", &O::width, &O::height, &O::depth, kMaxSide,
             "the sample's width x height x the smaller of them",
             "block size WxHxD in voxels (default: the sample's width and height, and the "
             "smaller of them as depth)");
-        t.integer("iterations", &O::iterations, 0, 100,
-            "match-texture iterations (Heeger & Bergen §3.3: about 5)");
+        detail::add_iterations_option(t);
         t.choice("pyramid", &O::pyramid,
             { { "combined", SolidPyramid::Combined }, { "laplacian", SolidPyramid::Laplacian } },
             "combined: 3-D Laplacian plus steerable pyramids of every xy, xz and yz slice, four "
@@ -28,11 +31,7 @@ const OptionTable<SolidOptions>& SolidOptions::table()
             "block's smallest side >= 8 px");
         t.integer("orientations", &O::orientations, 1, 8,
             "oriented bands per scale of the slices' steerable pyramids (combined only)");
-        t.choice("histogram", &O::histogram,
-            { { "exact", HistogramMode::Exact }, { "bins256", HistogramMode::Bins256 } },
-            "histogram matching: exact quantiles, or the paper's 256-bin cdf");
-        t.choice("fft", &O::fft, { { "kiss", FftBackend::Kiss }, { "fftw", FftBackend::Fftw } },
-            "FFT backend: kiss (built in) or fftw (only in -DTEXSYN_WITH_FFTW=ON builds)");
+        detail::add_matching_options(t);
         return t;
     }();
     return t;
@@ -42,10 +41,11 @@ bool SolidOptions::validate(std::string& error) const
 {
     const bool zero = width == 0 && height == 0 && depth == 0;
     if (!zero
-        && (width < 1 || height < 1 || depth < 1 || width > 16384 || height > 16384
-            || depth > 16384)) {
+        && (width < 1 || height < 1 || depth < 1 || width > kMaxSide || height > kMaxSide
+            || depth > kMaxSide)) {
         error = "size=" + std::to_string(width) + "x" + std::to_string(height) + "x"
-            + std::to_string(depth) + " is out of range (each side 1..16384)";
+            + std::to_string(depth) + " is out of range (each side 1.." + std::to_string(kMaxSide)
+            + ")";
         return false;
     }
     // The rest are the pyramid method's own options, with its ranges and messages.

@@ -2,10 +2,7 @@
 // A volume as a multi-part OpenEXR of z slices, for tools without OpenVDB.
 #include <texsyn/volume.h>
 
-#include <filesystem>
-
 #include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imageio.h>
 
 #include <texsyn/io.h>
 
@@ -41,29 +38,12 @@ bool write_volume_exr(
         spec.attribute("compression", "zip");
         specs.push_back(std::move(spec));
     }
-    const std::string tmp = temporary_path_for(filename);
-    auto fail = [&](const std::string& msg) {
-        std::error_code ec;
-        std::filesystem::remove(tmp, ec);
-        error = filename + ": cannot write (" + msg + ")";
-        return false;
-    };
-    auto out = OIIO::ImageOutput::create("exr");
-    if (!out || !out->supports("multiimage"))
-        return fail("this OpenImageIO cannot write multi-part OpenEXR");
-    if (!out->open(tmp, int(specs.size()), specs.data()))
-        return fail(out->geterror());
-    for (int z = 0; z < v.depth(); ++z) {
-        if (z && !out->open(tmp, specs[size_t(z)], OIIO::ImageOutput::AppendSubimage))
-            return fail(out->geterror());
-        OIIO::ImageBuf part;
-        imagebuf_from_planes(z_slice(v, z), part, true);
-        if (!out->write_image(OIIO::TypeFloat, part.localpixels()))
-            return fail(out->geterror());
-    }
-    if (!out->close())
-        return fail(out->geterror());
-    return commit_file(tmp, filename, error);
+    return write_multipart_exr(
+        filename, specs,
+        [&](size_t z, OIIO::ImageBuf& part) {
+            imagebuf_from_planes(z_slice(v, int(z)), part, true);
+        },
+        error);
 }
 
 } // namespace texsyn
