@@ -8,13 +8,15 @@
 #include <texsyn/io.h>
 #include <texsyn/synthesis.h>
 
-#include <sys/resource.h>
-
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <benchmark/benchmark.h>
 
+#include "bench_common.h"
+
 using namespace texsyn;
+using texsyn::bench::configure_workload;
+using texsyn::bench::peak_megabytes;
 
 namespace {
 
@@ -26,13 +28,6 @@ OIIO::ImageBuf sample_of_size(int size)
         throw std::runtime_error(error);
     // rust.png is 256x256; P1 uses its top-left 128x128 crop.
     return OIIO::ImageBufAlgo::cut(file, OIIO::ROI(0, size, 0, size));
-}
-
-double peak_megabytes()
-{
-    rusage ru {};
-    getrusage(RUSAGE_SELF, &ru);
-    return double(ru.ru_maxrss) / 1024.0;
 }
 
 void run_workload(
@@ -74,12 +69,9 @@ void register_workloads()
     for (const Workload& w : workloads)
         for (FftBackend fft : { FftBackend::Kiss, FftBackend::Fftw }) {
             std::string name = std::string(w.name) + "/" + fft_backend_name(fft);
-            benchmark::RegisterBenchmark(name.c_str(), run_workload, w.sample, w.out, w.kind, fft)
-                ->Unit(benchmark::kMillisecond)
-                ->UseRealTime()
-                ->Iterations(1)
-                ->Repetitions(5)
-                ->ReportAggregatesOnly(true);
+            configure_workload(benchmark::RegisterBenchmark(
+                                   name.c_str(), run_workload, w.sample, w.out, w.kind, fft),
+                5);
         }
 }
 
@@ -87,9 +79,5 @@ void register_workloads()
 
 int main(int argc, char** argv)
 {
-    register_workloads();
-    benchmark::Initialize(&argc, argv);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return texsyn::bench::run_benchmarks(argc, argv, register_workloads);
 }

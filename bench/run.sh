@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Runs every pyramid workload in its own process (so peak_MB is that workload's) and prints
-# median wall time and peak memory. usage: bench/run.sh BUILD_DIR [filter-regex]
+# Runs every workload of a benchmark program in its own process (so peak_MB is that
+# workload's) and prints median wall time and peak memory.
+# usage: bench/run.sh BUILD_DIR [filter-regex] [program: pyramid_bench (default), solid_bench]
 set -euo pipefail
-bench="$1/bench/pyramid_bench"
+bench="$1/bench/${3:-pyramid_bench}"
 filter="${2:-.}"
 for name in $("$bench" --benchmark_list_tests | grep -E "$filter"); do
   "$bench" --benchmark_filter="^${name}\$" --benchmark_format=csv 2>/dev/null \

@@ -24,3 +24,8 @@ find_package(kissfft CONFIG REQUIRED COMPONENTS SHARED float)
 if(TEXSYN_WITH_FFTW)
   pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
 endif()
+
+# OpenVDB (solid textures' .vdb output): Debian ships a find module, not a config package.
+# It needs libboost-iostreams-dev too (../shared/ECOSYSTEM.md §9).
+list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB)
+find_package(OpenVDB REQUIRED)

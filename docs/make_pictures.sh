@@ -37,5 +37,34 @@ oiiotool "$tmp/lit.exr" --colorconvert linear sRGB -d uint8 -o "$out/stucco_lit.
 "$texsyn" --seed 3 "$tmp/lit.exr" --pyramid:size=256x256:flatten=1 --tocolorspace sRGB -d uint8 \
     -o "$out/stucco_lit_flat.png"
 rm -rf "$tmp"
+# Solid textures: an xy, an xz and a yz slice side by side. The tool writes z slices only;
+# python3-openimageio cuts the other two axes out of the stack of them.
+solid_slices() { # EXR PNG
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import sys
+import numpy as np
+import OpenImageIO as oiio
+inp = oiio.ImageInput.open(sys.argv[1])
+slices = []
+while inp.seek_subimage(len(slices), 0):
+    slices.append(inp.read_image("float"))
+vol = np.stack(slices)  # z, y, x, channel; sRGB-encoded values
+n = vol.shape[0] // 2
+row = np.concatenate([vol[n], vol[:, n, :, :], vol[:, :, n, :]], axis=1)
+pixels = (np.clip(row, 0.0, 1.0) * 255.0 + 0.5).astype(np.uint8)
+out = oiio.ImageOutput.create(sys.argv[2])
+out.open(sys.argv[2], oiio.ImageSpec(pixels.shape[1], pixels.shape[0], pixels.shape[2], "uint8"))
+out.write_image(pixels)
+out.close()
+PY
+}
+for mode in combined laplacian; do
+  "$texsyn" --seed 1 "$samples/marble_pink.png" --solid:size=128x128x128:pyramid=$mode \
+      --tocolorspace "sRGB - Texture" -d float -o "$out/solid_$mode.exr"
+  name=marble_solid_slices.png
+  [ "$mode" = laplacian ] && name=marble_solid_laplacian_slices.png
+  solid_slices "$out/solid_$mode.exr" "$out/$name"
+  rm -f "$out/solid_$mode.exr"
+done
 rm -f "$out/stucco_tile.png" "$out/rust.tsa"
 ls -la "$out"

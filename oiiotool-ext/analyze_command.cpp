@@ -28,7 +28,7 @@ PyramidOptions parse_analyze_options(const std::string& command, const std::stri
                 + "= is not an analysis option (known: pyramid, scales, orientations, fft, "
                   "flatten; "
                   "give synthesis options to --pyramid)");
-    return parse_pyramid_options(command, modifiers);
+    return parse_command_options<PyramidOptions>(command, modifiers);
 }
 
 void run_analyze(CliState& state, const std::string& command, const std::string& modifiers)

@@ -20,11 +20,13 @@ struct CliError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// One item on the stack: an image (float, scene-linear pixels in `buf`) or an analysis
-/// (`statistics` set, `buf` empty) read from a .tsa file or made by --analyze.
+/// One item on the stack: an image (float, scene-linear pixels in `buf`), an analysis
+/// (`statistics` set, `buf` empty) read from a .tsa file or made by --analyze, or a solid
+/// texture (`volume` set, `buf` empty) made by --solid.
 struct StackImage {
     OIIO::ImageBuf buf;
     std::shared_ptr<const TextureStatistics> statistics;
+    std::shared_ptr<PlanarVolume> volume;
     OIIO::ImageBuf file_pixels; ///< an input's pixels as read (for --iscolorspace)
     OIIO::TypeDesc input_format = OIIO::TypeUInt8; ///< the sample file's pixel type
     std::string source;                            ///< the sample file it came from
@@ -84,9 +86,56 @@ void reinterpret_input(CliState& state, const std::string& colorspace);
 /// --subbands writes the multi-part inspection EXR.
 void write_output(CliState& state, const std::string& filename);
 
-/// Parses --pyramid's modifiers (each option at most once); throws CliError naming the
-/// command on a bad or repeated one.
-PyramidOptions parse_pyramid_options(const std::string& command, const std::string& modifiers);
+/// Parses a command's modifiers with the option table of T (each option at most once);
+/// throws CliError naming the command on a bad or repeated one.
+template <class T>
+T parse_command_options(const std::string& command, const std::string& modifiers)
+{
+    T opt;
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::string error;
+    if (!split_option_string(modifiers, pairs, error))
+        throw CliError(command + " : " + error);
+    for (size_t i = 0; i < pairs.size(); ++i) {
+        for (size_t j = 0; j < i; ++j)
+            if (pairs[j].first == pairs[i].first)
+                throw CliError(command + " : " + pairs[i].first + " is given twice");
+        if (!T::table().set(opt, pairs[i].first, pairs[i].second, error))
+            throw CliError(command + " : " + error);
+    }
+    return opt;
+}
+
+/// What a command that needs a 2-D image says when given a solid texture.
+extern const char* const solid_input_message;
+
+/// A progress callback that shows "texsyn: COMMAND  NN%" on stderr.
+std::function<void(float)> progress_reporter(const std::string& command);
+
+/// A synthesis command's options: its modifiers parsed with T's table, plus the run's
+/// seed, thread count and (on a terminal or with -v) progress display.
+template <class T>
+T synthesis_options(const CliState& state, const std::string& command, const std::string& modifiers)
+{
+    T opt = parse_command_options<T>(command, modifiers);
+    opt.seed = state.seed;
+    opt.nthreads = state.threads;
+    if (state.progress)
+        opt.progress = progress_reporter(command);
+    return opt;
+}
+
+/// The stack entry for a synthesis from `sample`: its source file, colour spaces and pixel
+/// type carried over, no pixels yet.
+StackImage synthesis_of(const StackImage& sample);
+
+/// Ends a synthesis command's progress line and, with -v, reports "texsyn: COMMAND OPTIONS
+/// from SOURCE in N s" for a run that started at `start` (a steady_clock time in seconds).
+void report_synthesis(const CliState& state, const std::string& command, const std::string& options,
+    const std::string& source, double start);
+
+/// Now, in seconds of std::chrono::steady_clock.
+double seconds_now();
 
 /// --pyramid[:name=value…]: pops a sample, pushes the synthesis.
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers);
@@ -100,6 +149,14 @@ PyramidOptions parse_analyze_options(const std::string& command, const std::stri
 /// --check: prints the homogeneity report of the top image (texsyn/homogeneity.h) to
 /// stdout, warnings included; leaves the stack unchanged. Never fails on a poor sample.
 void run_check(CliState& state, const std::string& command);
+
+/// --solid[:name=value…]: pops a sample, pushes a solid texture (a volume).
+void run_solid(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// Writes the solid texture on top of the stack for `filename`: OpenVDB for .vdb, a
+/// multi-part EXR of z slices for .exr (scene-linear unless --tocolorspace says otherwise),
+/// with synth:* metadata, to a temporary file in pending_outputs.
+void write_volume_output(CliState& state, const std::string& filename);
 
 /// --recipe FILE: writes the recipe of the top image (a synthesis of a sample file), with
 /// paths relative to FILE's folder, to a temporary file in pending_outputs.

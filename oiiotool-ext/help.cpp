@@ -61,16 +61,26 @@ void print_help()
         "                          image or analysis. Options:\n",
         version());
     print_table(PyramidOptions::table(), PyramidOptions());
-    std::printf("\nExample:\n"
+    std::printf("    --solid[:name=value...]\n"
+                "                          Heeger & Bergen 1995 section 4 solid texture of the\n"
+                "                          current image: a 3-D block whose slices look like it.\n"
+                "                          Write it with -o FILE.vdb (OpenVDB: grids Cd and\n"
+                "                          density) or -o FILE.exr (one part per z slice).\n"
+                "                          Options:\n");
+    print_table(SolidOptions::table(), SolidOptions());
+    std::printf("\nExamples:\n"
                 "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o "
                 "rust_big.exr\n"
-                "    texsyn rust.png --check\n");
+                "    texsyn rust.png --check\n"
+                "    texsyn marble.png --solid:size=128x128x128 -o marble.vdb\n");
 }
 
 void print_methods()
 {
     std::printf("pyramid    Heeger & Bergen 1995: pyramid-based histogram matching "
-                "(steerable or Laplacian), seamless\n");
+                "(steerable or Laplacian), seamless\n"
+                "solid      Heeger & Bergen 1995 section 4: solid textures (3-D blocks) from a "
+                "2-D sample, seamless\n");
 }
 
 void print_version()

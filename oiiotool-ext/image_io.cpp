@@ -95,6 +95,8 @@ void reinterpret_input(CliState& state, const std::string& colorspace)
 void write_output(CliState& state, const std::string& filename)
 {
     StackImage& img = state.top("-o");
+    if (img.volume)
+        return write_volume_output(state, filename);
     if (is_analysis_filename(filename) != bool(img.statistics))
         throw CliError("-o " + filename
             + (img.statistics ? " : the current item is an analysis; write it as *.tsa, or "

@@ -42,7 +42,37 @@ std::pair<std::string, std::string> split_command(const std::string& a)
 
 bool is_command(const std::string& name)
 {
-    return name == "--pyramid" || name == "--analyze" || name == "--check";
+    return name == "--pyramid" || name == "--analyze" || name == "--check" || name == "--solid";
+}
+
+// What the pre-pass knows of each item on the stack.
+enum class Kind { Image, Analysis, Solid };
+
+// Every command but --pyramid needs a 2-D image; --pyramid takes an analysis too.
+void check_command_input(const std::string& command, const std::vector<Kind>& stack)
+{
+    if (stack.empty())
+        return; // "no current image", reported by the run
+    if (stack.back() == Kind::Solid)
+        throw CliError(command + " : " + solid_input_message);
+    if (stack.back() == Kind::Analysis && command == "--solid")
+        throw CliError(command
+            + " : the current item is an analysis; --solid analyses the sample itself (give "
+              "the image)");
+}
+
+// Solid textures are written as OpenVDB or as an EXR of z slices; .vdb holds nothing else.
+void check_output_kind(const std::string& out, Kind kind)
+{
+    const bool vdb = OIIO::Strutil::iends_with(out, ".vdb");
+    if (kind == Kind::Solid && !vdb && !OIIO::Strutil::iends_with(out, ".exr"))
+        throw CliError("-o " + out
+            + " : a solid texture is written as .vdb (OpenVDB) or .exr (one part per z "
+              "slice), not '"
+            + std::filesystem::path(out).extension().string() + "'");
+    if (kind != Kind::Solid && vdb)
+        throw CliError(
+            "-o " + out + " : .vdb holds solid textures (from --solid); the current image is 2-D");
 }
 
 int64_t int_argument(const std::string& option, const std::string& value, int64_t lo, int64_t hi)
@@ -88,6 +118,8 @@ enum class Early { Run, Exit };
 Early parse_globals(CliState& state, const std::vector<std::string>& args)
 {
     std::vector<std::string> inputs, outputs, recipes, colorspaces;
+    std::vector<Kind> stack; // as the run will build it, for the commands' input checks
+    bool solid = false;
     // Everything that makes or changes an image must be followed by an -o that writes it
     // (or a --check that reports on it).
     size_t last_output = 0;
@@ -117,11 +149,17 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
                 state.colorconfig_path = v;
             else if (a == "-d")
                 state.data_format = data_format_argument(v);
-            else if (a == "-o")
+            else if (a == "-o") {
                 outputs.push_back(v);
-            else if (a == "--recipe")
+                if (!stack.empty())
+                    check_output_kind(v, stack.back());
+            } else if (a == "--recipe") {
                 recipes.push_back(v);
-            else if (a == "--iscolorspace" || a == "--tocolorspace") {
+                if (!stack.empty() && stack.back() == Kind::Solid)
+                    throw CliError("--recipe " + v
+                        + " : recipes describe 2-D syntheses; the current image is a solid "
+                          "texture");
+            } else if (a == "--iscolorspace" || a == "--tocolorspace") {
                 check_written(i - 1);
                 colorspaces.push_back(a + " " + v);
             }
@@ -147,22 +185,36 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             if (!is_command(name))
                 throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
             check_written(i);
+            check_command_input(name, stack);
             if (name == "--check") {
                 if (!modifiers.empty())
                     throw CliError(name + " : takes no options (got '" + modifiers + "')");
                 check = true;
             } else if (name == "--analyze") {
                 parse_analyze_options(name, modifiers);
+                if (!stack.empty())
+                    stack.back() = Kind::Analysis;
+            } else if (name == "--solid") {
+                parse_command_options<SolidOptions>(name, modifiers);
+                solid = true;
+                if (!stack.empty())
+                    stack.back() = Kind::Solid;
             } else {
-                parse_pyramid_options(name, modifiers);
+                parse_command_options<PyramidOptions>(name, modifiers);
+                if (!stack.empty())
+                    stack.back() = Kind::Image;
             }
         } else {
             check_written(i);
             inputs.push_back(a);
+            stack.push_back(is_analysis_filename(a) ? Kind::Analysis : Kind::Image);
         }
     }
     if (outputs.empty() && recipes.empty() && !check && !args.empty())
         throw CliError("nothing to do: no -o FILE (see texsyn --help)");
+    if (solid && state.subbands)
+        throw CliError("--subbands : does not apply to --solid (solid textures have no "
+                       "inspection EXR)");
     for (const std::string& recipe : recipes) {
         check_output_path("--recipe", recipe, inputs);
         if (!OIIO::Strutil::iends_with(recipe, ".texsyn"))
@@ -176,7 +228,9 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             continue;
         }
         auto writer = OIIO::ImageOutput::create(out);
-        if (!writer) {
+        if (!writer && OIIO::Strutil::iends_with(out, ".vdb")) {
+            (void)OIIO::geterror(); // written by texsyn itself, checked above
+        } else if (!writer) {
             (void)OIIO::geterror();
             throw CliError("-o " + out + " : no image format writes '"
                 + std::filesystem::path(out).extension().string() + "' files");
@@ -227,6 +281,8 @@ void run(CliState& state, const std::vector<std::string>& args)
                 run_analyze(state, name, modifiers);
             else if (name == "--check")
                 run_check(state, name);
+            else if (name == "--solid")
+                run_solid(state, name, modifiers);
         } else {
             push_input(state, a);
         }

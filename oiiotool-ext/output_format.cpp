@@ -28,6 +28,7 @@ const std::vector<FormatTypes>& format_table()
     static const std::vector<FormatTypes> table = {
         { { "exr", "sxr", "mxr" }, { TypeHalf, TypeFloat } },
         { { "hdr", "rgbe" }, { TypeFloat } },
+        { { "vdb" }, { TypeFloat } },
         { { "png" }, { TypeUInt8, TypeUInt16 } },
         { { "jpg", "jpeg", "jpe", "jfif" }, { TypeUInt8 } },
         { { "tif", "tiff", "tx" }, { TypeUInt8, TypeUInt16, TypeHalf, TypeFloat } },

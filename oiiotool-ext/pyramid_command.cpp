@@ -2,57 +2,20 @@
 // --pyramid: Heeger & Bergen pyramid synthesis.
 #include "cli_state.h"
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 
 namespace texsyn::cli {
 
-namespace {
-
-void show_progress(float fraction)
-{
-    std::fprintf(stderr, "\rtexsyn: --pyramid %3d%%", int(fraction * 100.0f + 0.5f));
-    std::fflush(stderr);
-}
-
-} // namespace
-
-PyramidOptions parse_pyramid_options(const std::string& command, const std::string& modifiers)
-{
-    PyramidOptions opt;
-    std::vector<std::pair<std::string, std::string>> pairs;
-    std::string error;
-    if (!split_option_string(modifiers, pairs, error))
-        throw CliError(command + " : " + error);
-    for (size_t i = 0; i < pairs.size(); ++i) {
-        for (size_t j = 0; j < i; ++j)
-            if (pairs[j].first == pairs[i].first)
-                throw CliError(command + " : " + pairs[i].first + " is given twice");
-        if (!PyramidOptions::table().set(opt, pairs[i].first, pairs[i].second, error))
-            throw CliError(command + " : " + error);
-    }
-    return opt;
-}
-
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers)
 {
-    PyramidOptions opt = parse_pyramid_options(command, modifiers);
-    opt.seed = state.seed;
-    opt.nthreads = state.threads;
-    if (state.progress)
-        opt.progress = show_progress;
-
+    PyramidOptions opt = synthesis_options<PyramidOptions>(state, command, modifiers);
     StackImage sample = state.pop_sample(command);
     if (sample.statistics && opt.flatten) // an analysis keeps no pixels to divide
         throw CliError(command + " : flatten=1 needs a sample, and " + sample.source
             + " is an analysis (flatten when analysing: --analyze:flatten=1)");
-    StackImage result;
-    result.source = sample.source;
-    result.input_colorspace = sample.input_colorspace;
-    result.input_format = sample.input_format;
-    result.output_colorspace = sample.output_colorspace;
-    auto start = std::chrono::steady_clock::now();
+    StackImage result = synthesis_of(sample);
+    const double start = seconds_now();
     std::vector<NamedImage>* subbands = state.subbands ? &result.subbands : nullptr;
     bool ok = sample.statistics
         ? synthesize_from_statistics(result.buf, *sample.statistics, opt, nullptr, subbands)
@@ -73,13 +36,8 @@ void run_pyramid(CliState& state, const std::string& command, const std::string&
         if (const char* env = std::getenv("OCIO"); result.recipe.colorconfig.empty() && env)
             result.recipe.colorconfig = env;
     }
-    if (state.verbose) {
-        double secs
-            = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "texsyn: --pyramid %s from %s in %.2f s\n",
-            result.buf.spec().get_string_attribute("synth:options").c_str(), sample.source.c_str(),
-            secs);
-    }
+    report_synthesis(state, command, result.buf.spec().get_string_attribute("synth:options"),
+        sample.source, start);
     state.stack.push_back(std::move(result));
 }
 

@@ -167,17 +167,8 @@ TEST(PyramidSynthesis, NonPeriodicSampleGivesNoSeamLikeArtefacts)
 
 TEST(PyramidSynthesis, AlphaIsSynthesizedAsItsOwnChannel)
 {
-    OIIO::ImageBuf rgb = linear_sample("stucco_yellow.png");
-    PlanarImage s = planes_of(rgb);
-    Plane alpha(128, 128);
-    for (int y = 0; y < 128; ++y)
-        for (int x = 0; x < 128; ++x)
-            alpha(x, y) = 0.5f + 0.5f * std::sin(0.3f * x) * std::cos(0.2f * y);
-    s.channels.push_back(alpha);
-    s.channel_names.push_back("A");
-    s.alpha_channel = 3;
-    OIIO::ImageBuf sample;
-    imagebuf_from_planes(s, sample);
+    Plane alpha;
+    const OIIO::ImageBuf sample = test::stucco_with_alpha(alpha);
     OIIO::ImageBuf out = pyramid_synthesize(sample, options(128, 128, 3));
     ASSERT_FALSE(out.has_error()) << out.geterror();
     ASSERT_EQ(out.nchannels(), 4);

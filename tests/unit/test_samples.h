@@ -2,6 +2,7 @@
 // Samples for unit tests, as the tool sees them.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -35,6 +36,22 @@ inline PlanarImage planes_of(const OIIO::ImageBuf& buf)
     std::string error;
     EXPECT_TRUE(planes_from_imagebuf(buf, p, error)) << error;
     return p;
+}
+
+/// stucco_yellow.png (scene-linear) with a smooth alpha channel "A" (returned in `alpha`).
+inline OIIO::ImageBuf stucco_with_alpha(Plane& alpha)
+{
+    PlanarImage s = planes_of(linear_sample("stucco_yellow.png"));
+    alpha = Plane(s.width(), s.height());
+    for (int y = 0; y < alpha.height(); ++y)
+        for (int x = 0; x < alpha.width(); ++x)
+            alpha(x, y) = 0.5f + 0.5f * std::sin(0.3f * x) * std::cos(0.2f * y);
+    s.channels.push_back(alpha);
+    s.channel_names.push_back("A");
+    s.alpha_channel = 3;
+    OIIO::ImageBuf sample;
+    imagebuf_from_planes(s, sample);
+    return sample;
 }
 
 } // namespace texsyn::test

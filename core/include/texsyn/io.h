@@ -2,6 +2,7 @@
 // File input and atomic output. Every message names the file.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,5 +35,12 @@ bool same_file(const std::string& a, const std::string& b);
 /// (TypeUnknown = the buffer's). Fails (false, "FILE: reason").
 bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename,
     OIIO::TypeDesc format, std::string& error);
+
+/// Writes a multi-part OpenEXR atomically: one part per entry of `specs` (OpenEXR requires
+/// them to share one display window; "oiio:subimagename" names a part), the pixels of part
+/// i from `part(i, buf)`, which fills `buf` with a float image of that part's data size
+/// and channels. Fails (false, "FILE: cannot write (reason)") leaving no file behind.
+bool write_multipart_exr(const std::string& filename, const std::vector<OIIO::ImageSpec>& specs,
+    const std::function<void(size_t, OIIO::ImageBuf&)>& part, std::string& error);
 
 } // namespace texsyn

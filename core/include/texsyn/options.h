@@ -21,6 +21,10 @@ bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, 
 bool parse_size_option(std::string_view name, std::string_view text, int hi, int& width,
     int& height, std::string& error);
 
+/// Parses "WxHxD" with 1 <= W, H, D <= hi.
+bool parse_size3_option(std::string_view name, std::string_view text, int hi, int& width,
+    int& height, int& depth, std::string& error);
+
 /// Parses "a,b,c": 1..max_count decimal numbers, each in [lo, hi].
 bool parse_number_list_option(std::string_view name, std::string_view text, float lo, float hi,
     size_t max_count, std::vector<float>& values, std::string& error);
@@ -72,6 +76,27 @@ public:
                 return parse_size_option(nm, v, hi, t.*w, t.*h, err);
             },
             [=](const T& t) { return std::to_string(t.*w) + "x" + std::to_string(t.*h); } });
+        return *this;
+    }
+    /// Three int members written as "WxHxD", each in [1, hi]; "0x0x0" is accepted only
+    /// when `zero_means` is not empty (it is then described by it).
+    OptionTable& size3(const char* name, int T::*w, int T::*h, int T::*d, int hi,
+        const char* zero_means, const char* help)
+    {
+        std::string nm = name;
+        std::string zero = zero_means;
+        m_fields.push_back({ nm, help, "WxHxD, 1.." + std::to_string(hi),
+            [=](T& t, std::string_view v, std::string& err) {
+                if (!zero.empty() && v == "0x0x0") {
+                    t.*w = t.*h = t.*d = 0;
+                    return true;
+                }
+                return parse_size3_option(nm, v, hi, t.*w, t.*h, t.*d, err);
+            },
+            [=](const T& t) {
+                return std::to_string(t.*w) + "x" + std::to_string(t.*h) + "x"
+                    + std::to_string(t.*d);
+            } });
         return *this;
     }
     /// A list of up to `max_count` numbers in [lo, hi], written "a,b,c"; an empty list

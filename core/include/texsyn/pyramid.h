@@ -23,6 +23,7 @@
 
 #include <texsyn/fft.h>
 #include <texsyn/image.h>
+#include <texsyn/volume.h>
 
 namespace texsyn {
 
@@ -91,6 +92,48 @@ std::unique_ptr<Pyramid> make_laplacian_pyramid(
 /// are out of range.
 std::unique_ptr<Pyramid> make_steerable_pyramid(
     int width, int height, int scales, int orientations, FftBackend fft, std::string& error);
+
+/// A band decomposition plan for one volume size (3-D), with the same rules as Pyramid.
+class VolumePyramid {
+public:
+    virtual ~VolumePyramid() = default;
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+    int depth() const { return m_depth; }
+    /// Band names in the order build() produces them: "L0" (finest) … "L<S-1>", "lowpass".
+    const std::vector<std::string>& band_names() const { return m_names; }
+    int nbands() const { return int(m_names.size()); }
+
+    /// Decomposes `volume` (width x height x depth) into nbands() volumes (resized as
+    /// needed).
+    virtual void build(
+        const Volume& volume, std::vector<Volume>& bands, int nthreads = 0) const = 0;
+    /// Reconstructs the volume from bands shaped as build() makes them.
+    virtual void collapse(
+        const std::vector<Volume>& bands, Volume& volume, int nthreads = 0) const = 0;
+
+protected:
+    VolumePyramid(int width, int height, int depth)
+        : m_width(width)
+        , m_height(height)
+        , m_depth(depth)
+    { }
+    int m_width;
+    int m_height;
+    int m_depth;
+    std::vector<std::string> m_names;
+};
+
+/// 3-D Laplacian pyramid for solid textures (Heeger & Bergen 1995 §4: "since the Laplacian
+/// pyramid is constructed using separable convolutions, it extends trivially to three
+/// dimensions"): the 2-D pyramid's reduce and expand applied along x, y and z, circular in
+/// all three (so a synthesized block tiles in every direction). Level s is
+/// ceil(w/2^s) x ceil(h/2^s) x ceil(d/2^s); band values are in the volume's units like the
+/// 2-D bands, so a sample's 2-D band histograms apply to the 3-D bands. Exact
+/// reconstruction for any size; parallel over slabs, bit-identical at any nthreads.
+/// Returns nullptr unless 1 <= scales and width, height, depth >= 2^scales.
+std::unique_ptr<VolumePyramid> make_laplacian_pyramid_3d(
+    int width, int height, int depth, int scales);
 
 /// Moisan's periodic + smooth decomposition (notes/pyramid-math.md): returns the periodic
 /// component p of `image` (same size and mean), whose spectrum has none of the cross-shaped

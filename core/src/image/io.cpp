@@ -117,4 +117,32 @@ bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename
     return commit_file(tmp, filename, error);
 }
 
+bool write_multipart_exr(const std::string& filename, const std::vector<OIIO::ImageSpec>& specs,
+    const std::function<void(size_t, OIIO::ImageBuf&)>& part, std::string& error)
+{
+    const std::string tmp = temporary_path_for(filename);
+    auto fail = [&](const std::string& msg) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        error = filename + ": cannot write (" + msg + ")";
+        return false;
+    };
+    auto out = OIIO::ImageOutput::create("exr");
+    if (!out || !out->supports("multiimage"))
+        return fail("this OpenImageIO cannot write multi-part OpenEXR");
+    if (!out->open(tmp, int(specs.size()), specs.data()))
+        return fail(out->geterror());
+    for (size_t i = 0; i < specs.size(); ++i) {
+        if (i && !out->open(tmp, specs[i], OIIO::ImageOutput::AppendSubimage))
+            return fail(out->geterror());
+        OIIO::ImageBuf pixels;
+        part(i, pixels);
+        if (!out->write_image(OIIO::TypeFloat, pixels.localpixels()))
+            return fail(out->geterror());
+    }
+    if (!out->close())
+        return fail(out->geterror());
+    return commit_file(tmp, filename, error);
+}
+
 } // namespace texsyn

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <texsyn/options.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 
@@ -24,26 +25,56 @@ bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, 
     return true;
 }
 
+namespace {
+
+// Parses "AxBx…" with exactly `n` non-negative integers into `dims`; then checks each is in
+// [1, hi]. `example` is a well-formed size for the message.
+bool parse_dims(std::string_view name, std::string_view text, size_t n, int hi, const char* example,
+    int64_t* dims, std::string& error)
+{
+    std::string_view rest = text;
+    std::string ignored;
+    for (size_t i = 0; i < n; ++i) {
+        const size_t x = i + 1 < n ? rest.find('x') : rest.size();
+        if (x == std::string_view::npos
+            || !parse_int_option(name, rest.substr(0, x), 0, INT64_MAX, dims[i], ignored)) {
+            error = std::string(name) + "=" + std::string(text) + " is not a size (expected "
+                + example + ")";
+            return false;
+        }
+        rest.remove_prefix(std::min(rest.size(), x + 1));
+    }
+    for (size_t i = 0; i < n; ++i)
+        if (dims[i] < 1 || dims[i] > hi) {
+            error = std::string(name) + "=" + std::string(text) + " is out of range (each side 1.."
+                + std::to_string(hi) + ")";
+            return false;
+        }
+    return true;
+}
+
+} // namespace
+
 bool parse_size_option(std::string_view name, std::string_view text, int hi, int& width,
     int& height, std::string& error)
 {
-    size_t x = text.find('x');
-    int64_t w = 0, h = 0;
-    std::string ignored;
-    if (x == std::string_view::npos
-        || !parse_int_option(name, text.substr(0, x), 0, INT64_MAX, w, ignored)
-        || !parse_int_option(name, text.substr(x + 1), 0, INT64_MAX, h, ignored)) {
-        error = std::string(name) + "=" + std::string(text)
-            + " is not a size (expected WxH, e.g. 1024x1024)";
+    int64_t dims[2];
+    if (!parse_dims(name, text, 2, hi, "WxH, e.g. 1024x1024", dims, error))
         return false;
-    }
-    if (w < 1 || h < 1 || w > hi || h > hi) {
-        error = std::string(name) + "=" + std::string(text) + " is out of range (each side 1.."
-            + std::to_string(hi) + ")";
+    width = int(dims[0]);
+    height = int(dims[1]);
+    return true;
+}
+
+bool parse_size3_option(std::string_view name, std::string_view text, int hi, int& width,
+    int& height, int& depth, std::string& error)
+{
+    int64_t dims[3];
+    if (!parse_dims(name, text, 3, hi, "WxHxD, e.g. 128x128x128", dims, error))
         return false;
-    }
-    width = int(w);
-    height = int(h);
+    width = int(dims[0]);
+    height = int(dims[1]);
+    depth = int(dims[2]);
     return true;
 }
 

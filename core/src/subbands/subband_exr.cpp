@@ -2,7 +2,6 @@
 #include <texsyn/subbands.h>
 
 #include <algorithm>
-#include <filesystem>
 
 #include <OpenImageIO/imageio.h>
 
@@ -52,32 +51,15 @@ bool write_subband_exr(const std::string& filename, const OIIO::ImageBuf& synth,
         specs.push_back(part_spec(s.image.width(), s.image.height(), s.image.channel_names,
             s.image.alpha_channel, s.name, display_w, display_h, synth.spec()));
 
-    std::string tmp = temporary_path_for(filename);
-    auto fail = [&](const std::string& msg) {
-        std::error_code ec;
-        std::filesystem::remove(tmp, ec);
-        error = filename + ": cannot write (" + msg + ")";
-        return false;
-    };
-    auto out = OIIO::ImageOutput::create("exr");
-    if (!out || !out->supports("multiimage"))
-        return fail("this OpenImageIO cannot write multi-part OpenEXR");
-    if (!out->open(tmp, int(specs.size()), specs.data()))
-        return fail(out->geterror());
-    for (size_t i = 0; i < specs.size(); ++i) {
-        if (i && !out->open(tmp, specs[i], OIIO::ImageOutput::AppendSubimage))
-            return fail(out->geterror());
-        OIIO::ImageBuf part;
-        if (i == 0)
-            part.copy(synth, OIIO::TypeFloat);
-        else
-            imagebuf_from_planes(subbands[i - 1].image, part);
-        if (!out->write_image(OIIO::TypeFloat, part.localpixels()))
-            return fail(out->geterror());
-    }
-    if (!out->close())
-        return fail(out->geterror());
-    return commit_file(tmp, filename, error);
+    return write_multipart_exr(
+        filename, specs,
+        [&](size_t i, OIIO::ImageBuf& part) {
+            if (i == 0)
+                part.copy(synth, OIIO::TypeFloat);
+            else
+                imagebuf_from_planes(subbands[i - 1].image, part);
+        },
+        error);
 }
 
 } // namespace texsyn

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include <texsyn/synthesis.h>
+#include "synthesis_pvt.h"
 
 namespace texsyn {
 
@@ -10,8 +10,7 @@ const OptionTable<PyramidOptions>& PyramidOptions::table()
         OptionTable<O> t;
         t.size("size", &O::width, &O::height, 1 << 20, "the sample's size",
             "output size WxH (default: the sample's size)");
-        t.integer("iterations", &O::iterations, 0, 100,
-            "match-texture iterations (Heeger & Bergen §3.3: about 5)");
+        detail::add_iterations_option(t);
         t.choice("pyramid", &O::pyramid,
             { { "steerable", PyramidKind::Steerable }, { "laplacian", PyramidKind::Laplacian } },
             "subband decomposition: steerable (oriented bands) or laplacian");
@@ -20,11 +19,7 @@ const OptionTable<PyramidOptions>& PyramidOptions::table()
             "output >= 8 px");
         t.integer("orientations", &O::orientations, 1, 8,
             "oriented bands per scale of the steerable pyramid");
-        t.choice("histogram", &O::histogram,
-            { { "exact", HistogramMode::Exact }, { "bins256", HistogramMode::Bins256 } },
-            "histogram matching: exact quantiles, or the paper's 256-bin cdf");
-        t.choice("fft", &O::fft, { { "kiss", FftBackend::Kiss }, { "fftw", FftBackend::Fftw } },
-            "FFT backend: kiss (built in) or fftw (only in -DTEXSYN_WITH_FFTW=ON builds)");
+        detail::add_matching_options(t);
         t.numbers("gain", &O::gain, 0.0f, 16.0f, 16, "1",
             "contrast gain of each scale's bands, finest first (s0; the high-pass follows s0), "
             "applied to the sample's statistics (paper §6 sliders); missing scales are 1");

@@ -47,3 +47,25 @@ float band_gain(const PyramidOptions& opt, int band, int nbands);
 bool check_band_adjustments(const PyramidOptions& opt, int scales, std::string& error);
 
 } // namespace texsyn::detail
+
+namespace texsyn::detail {
+
+/// The option-table entries the pyramid and solid methods share, declared once: T has
+/// `iterations`, `histogram` and `fft` members.
+template <class T>
+void add_iterations_option(OptionTable<T>& t)
+{
+    t.integer("iterations", &T::iterations, 0, 100,
+        "match-texture iterations (Heeger & Bergen §3.3: about 5)");
+}
+template <class T>
+void add_matching_options(OptionTable<T>& t)
+{
+    t.choice("histogram", &T::histogram,
+        { { "exact", HistogramMode::Exact }, { "bins256", HistogramMode::Bins256 } },
+        "histogram matching: exact quantiles, or the paper's 256-bin cdf");
+    t.choice("fft", &T::fft, { { "kiss", FftBackend::Kiss }, { "fftw", FftBackend::Fftw } },
+        "FFT backend: kiss (built in) or fftw (only in -DTEXSYN_WITH_FFTW=ON builds)");
+}
+
+} // namespace texsyn::detail
