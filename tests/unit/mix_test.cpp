@@ -27,6 +27,14 @@ MixOptions mix_options(int size)
     return opt;
 }
 
+MixOptions palette_pattern(int palette, int pattern, int size = 0)
+{
+    MixOptions opt = mix_options(size);
+    opt.palette = palette;
+    opt.pattern = pattern;
+    return opt;
+}
+
 // ||a - b||_F / ||b||_F of two row-major matrices.
 double relative_frobenius(const std::vector<double>& a, const std::vector<double>& b)
 {
@@ -261,9 +269,7 @@ TEST(MixStatistics, ScalesAreCommonAndSizesMayDiffer)
 {
     // rust is 256x256 (5 scales), paper 128x128 (4): the mix uses 4 for both.
     OIIO::ImageBuf a = linear_sample("rust.png"), b = linear_sample("paper_crinkled.png");
-    MixOptions opt;
-    opt.palette = 0;
-    opt.pattern = 1;
+    MixOptions opt = palette_pattern(0, 1);
     TextureStatistics s;
     std::string error;
     ASSERT_TRUE(mix_statistics({ &a, &b }, opt, s, error)) << error;
@@ -274,9 +280,7 @@ TEST(MixStatistics, ScalesAreCommonAndSizesMayDiffer)
 TEST(MixStatistics, BadSamplesAreRefusedNamingThem)
 {
     OIIO::ImageBuf a = linear_sample("stucco_yellow.png"), b = linear_sample("rust.png");
-    MixOptions opt;
-    opt.palette = 0;
-    opt.pattern = 1;
+    MixOptions opt = palette_pattern(0, 1);
     TextureStatistics s;
     std::string error;
     EXPECT_FALSE(mix_statistics({ &a }, opt, s, error));
@@ -319,10 +323,7 @@ TEST(MixStatistics, BadSamplesAreRefusedNamingThem)
 TEST(MixSynthesis, PaletteOfOnePatternOfAnother)
 {
     OIIO::ImageBuf rust = linear_sample("rust.png"), paper = linear_sample("paper_crinkled.png");
-    MixOptions opt = mix_options(128);
-    opt.palette = 0;
-    opt.pattern = 1;
-    OIIO::ImageBuf out = mix_synthesize({ &rust, &paper }, opt);
+    OIIO::ImageBuf out = mix_synthesize({ &rust, &paper }, palette_pattern(0, 1, 128));
     ASSERT_FALSE(out.has_error()) << out.geterror();
     EXPECT_EQ(out.spec().get_string_attribute("synth:method"), "mix");
     EXPECT_EQ(out.spec().get_string_attribute("synth:options"),
@@ -444,15 +445,11 @@ TEST(MixSynthesis, FlatSamplesGiveFiniteSensibleResults)
     const float grey[3] = { 0.2f, 0.3f, 0.4f };
     OIIO::ImageBufAlgo::fill(flat, grey);
 
-    MixOptions opt = mix_options(64);
-    opt.palette = 0;
-    opt.pattern = 1;
-    OIIO::ImageBuf out = mix_synthesize({ &rust, &flat }, opt);
+    OIIO::ImageBuf out = mix_synthesize({ &rust, &flat }, palette_pattern(0, 1, 64));
     ASSERT_FALSE(out.has_error()) << out.geterror();
     EXPECT_LT(max_channel_w1(out, rust), 1e-4); // planes_of also fails on NaN/Inf
 
-    opt.palette.reset();
-    opt.pattern.reset();
+    MixOptions opt = mix_options(64);
     opt.weights = { 0.5f, 0.5f };
     out = mix_synthesize({ &rust, &flat }, opt);
     ASSERT_FALSE(out.has_error()) << out.geterror();
