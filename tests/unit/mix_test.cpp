@@ -496,7 +496,7 @@ TEST(Transfer, RefusesSizeAndOtherChannelCounts)
     out = transfer_synthesize(rust, grey, PyramidOptions());
     ASSERT_TRUE(out.has_error());
     EXPECT_EQ(out.geterror(),
-        "the image has 1 channels, the sample 3: a transfer needs the same "
+        "the image has 1 channel, the sample 3: a transfer needs the same "
         "channels");
 }
 

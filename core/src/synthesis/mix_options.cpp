@@ -32,8 +32,8 @@ const OptionTable<MixOptions>& MixOptions::table()
             "the sample giving the colour: PCA colour transform, pixel and channel histograms "
             "(with pattern=, or with split= where it defaults to 0)");
         t.optional_integer("pattern", &O::pattern, 0, kMaxSamples - 1,
-            "the sample giving the pattern: subband histograms, analysed in the palette "
-            "sample's colour basis");
+            "the sample giving the pattern: subband histograms, each colour component in the "
+            "sample's own basis (paired with the palette's by rank)");
         t.optional_integer("split", &O::split, 1, 16,
             "two samples: scales >= split and the low-pass come from sample 0, the high-pass "
             "and scales < split from sample 1 (laplacian: levels)");

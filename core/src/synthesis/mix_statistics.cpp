@@ -44,7 +44,7 @@ bool read_samples(const std::vector<const OIIO::ImageBuf*>& samples,
         }
         const PlanarImage &a = planes[k], &b = planes[0];
         if (a.nchannels() != b.nchannels() || a.alpha_channel != b.alpha_channel) {
-            error = sample_name(k) + " has " + std::to_string(a.nchannels()) + " channels ("
+            error = sample_name(k) + " has " + detail::count_text(a.nchannels(), "channel") + " ("
                 + channel_list(a) + "), " + sample_name(0) + " " + std::to_string(b.nchannels())
                 + " (" + channel_list(b) + "): the samples of a mix need the same channels";
             return false;

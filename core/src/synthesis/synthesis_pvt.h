@@ -52,6 +52,9 @@ OIIO::ImageBuf value_form(const char* name, F&& f)
     return result;
 }
 
+/// "1 channel", "3 channels".
+std::string count_text(int n, const std::string& noun);
+
 /// "1.5 GB" style.
 std::string format_bytes(double bytes);
 

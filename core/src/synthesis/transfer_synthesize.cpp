@@ -19,7 +19,7 @@ bool transfer(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const OIIO::Ima
         return fail(error);
     const OIIO::ImageSpec &is = image.spec(), &ss = sample.spec();
     if (image.initialized() && sample.initialized() && is.nchannels != ss.nchannels)
-        return fail("the image has " + std::to_string(is.nchannels) + " channels, the sample "
+        return fail("the image has " + detail::count_text(is.nchannels, "channel") + ", the sample "
             + std::to_string(ss.nchannels) + ": a transfer needs the same channels");
     // The image fixes the output size, and with it the default number of scales.
     PyramidOptions sized = opt;
