@@ -42,7 +42,29 @@ std::pair<std::string, std::string> split_command(const std::string& a)
 
 bool is_command(const std::string& name)
 {
-    return name == "--pyramid" || name == "--analyze" || name == "--check";
+    return name == "--pyramid" || name == "--analyze" || name == "--check" || name == "--mix"
+        || name == "--transfer";
+}
+
+// Checks a command's options (throws CliError) and returns how many images it pops (a
+// command pushes one image back, --check leaves the one it reports on).
+int check_command(const std::string& name, const std::string& modifiers)
+{
+    if (name == "--mix")
+        return parse_mix_options(name, modifiers).nsamples();
+    if (name == "--transfer") {
+        parse_transfer_options(name, modifiers);
+        return 2;
+    }
+    if (name == "--check") {
+        if (!modifiers.empty())
+            throw CliError(name + " : takes no options (got '" + modifiers + "')");
+    } else if (name == "--analyze") {
+        parse_analyze_options(name, modifiers);
+    } else {
+        parse_pyramid_options(name, modifiers);
+    }
+    return 1;
 }
 
 int64_t int_argument(const std::string& option, const std::string& value, int64_t lo, int64_t hi)
@@ -88,6 +110,12 @@ enum class Early { Run, Exit };
 Early parse_globals(CliState& state, const std::vector<std::string>& args)
 {
     std::vector<std::string> inputs, outputs, recipes, colorspaces;
+    int depth = 0; // images on the stack at this point of the run
+    auto pop = [&](const std::string& command, int n) {
+        if (depth < n)
+            throw CliError(CliState::too_few_images(command, n, depth));
+        depth -= n;
+    };
     // Everything that makes or changes an image must be followed by an -o that writes it
     // (or a --check that reports on it).
     size_t last_output = 0;
@@ -117,11 +145,15 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
                 state.colorconfig_path = v;
             else if (a == "-d")
                 state.data_format = data_format_argument(v);
-            else if (a == "-o")
+            else if (a == "-o") {
+                pop(a, 1);
                 outputs.push_back(v);
-            else if (a == "--recipe")
+                ++depth;
+            } else if (a == "--recipe") {
+                pop(a, 1);
                 recipes.push_back(v);
-            else if (a == "--iscolorspace" || a == "--tocolorspace") {
+                ++depth;
+            } else if (a == "--iscolorspace" || a == "--tocolorspace") {
                 check_written(i - 1);
                 colorspaces.push_back(a + " " + v);
             }
@@ -147,18 +179,13 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             if (!is_command(name))
                 throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
             check_written(i);
-            if (name == "--check") {
-                if (!modifiers.empty())
-                    throw CliError(name + " : takes no options (got '" + modifiers + "')");
-                check = true;
-            } else if (name == "--analyze") {
-                parse_analyze_options(name, modifiers);
-            } else {
-                parse_pyramid_options(name, modifiers);
-            }
+            pop(name, check_command(name, modifiers));
+            ++depth;
+            check = check || name == "--check";
         } else {
             check_written(i);
             inputs.push_back(a);
+            ++depth;
         }
     }
     if (outputs.empty() && recipes.empty() && !check && !args.empty())
@@ -227,6 +254,10 @@ void run(CliState& state, const std::vector<std::string>& args)
                 run_analyze(state, name, modifiers);
             else if (name == "--check")
                 run_check(state, name);
+            else if (name == "--mix")
+                run_mix(state, name, modifiers);
+            else if (name == "--transfer")
+                run_transfer(state, name, modifiers);
         } else {
             push_input(state, a);
         }

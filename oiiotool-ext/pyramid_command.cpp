@@ -2,85 +2,44 @@
 // --pyramid: Heeger & Bergen pyramid synthesis.
 #include "cli_state.h"
 
-#include <chrono>
-#include <cstdio>
 #include <cstdlib>
 
 namespace texsyn::cli {
 
-namespace {
-
-void show_progress(float fraction)
-{
-    std::fprintf(stderr, "\rtexsyn: --pyramid %3d%%", int(fraction * 100.0f + 0.5f));
-    std::fflush(stderr);
-}
-
-} // namespace
-
 PyramidOptions parse_pyramid_options(const std::string& command, const std::string& modifiers)
 {
-    PyramidOptions opt;
-    std::vector<std::pair<std::string, std::string>> pairs;
-    std::string error;
-    if (!split_option_string(modifiers, pairs, error))
-        throw CliError(command + " : " + error);
-    for (size_t i = 0; i < pairs.size(); ++i) {
-        for (size_t j = 0; j < i; ++j)
-            if (pairs[j].first == pairs[i].first)
-                throw CliError(command + " : " + pairs[i].first + " is given twice");
-        if (!PyramidOptions::table().set(opt, pairs[i].first, pairs[i].second, error))
-            throw CliError(command + " : " + error);
-    }
-    return opt;
+    return parse_modifiers(command, modifiers, PyramidOptions::table());
 }
 
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers)
 {
     PyramidOptions opt = parse_pyramid_options(command, modifiers);
-    opt.seed = state.seed;
-    opt.nthreads = state.threads;
-    if (state.progress)
-        opt.progress = show_progress;
-
+    apply_run_settings(state, command, opt);
     StackImage sample = state.pop_sample(command);
     if (sample.statistics && opt.flatten) // an analysis keeps no pixels to divide
-        throw CliError(command + " : flatten=1 needs a sample, and " + sample.source
+        throw CliError(command + " : flatten=1 needs a sample, and " + sample.sources[0]
             + " is an analysis (flatten when analysing: --analyze:flatten=1)");
-    StackImage result;
-    result.source = sample.source;
-    result.input_colorspace = sample.input_colorspace;
-    result.input_format = sample.input_format;
-    result.output_colorspace = sample.output_colorspace;
-    auto start = std::chrono::steady_clock::now();
-    std::vector<NamedImage>* subbands = state.subbands ? &result.subbands : nullptr;
-    bool ok = sample.statistics
-        ? synthesize_from_statistics(result.buf, *sample.statistics, opt, nullptr, subbands)
-        : pyramid_synthesize(result.buf, sample.buf, opt, subbands);
-    if (state.progress)
-        std::fprintf(stderr, "\n");
-    if (!ok)
-        throw CliError(command + " : " + result.buf.geterror());
-    if (sample.from_file) { // a synthesis of a file: a recipe can say it
-        result.has_recipe = true;
-        result.recipe.sample = sample.source;
-        result.recipe.iscolorspace = sample.input_colorspace;
-        result.recipe.pyramid = opt;
-        result.recipe.pyramid.nthreads = 0;
-        result.recipe.pyramid.progress = nullptr;
-        result.recipe.subbands = state.subbands;
-        result.recipe.colorconfig = state.colorconfig_path;
-        if (const char* env = std::getenv("OCIO"); result.recipe.colorconfig.empty() && env)
-            result.recipe.colorconfig = env;
-    }
-    if (state.verbose) {
-        double secs
-            = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "texsyn: --pyramid %s from %s in %.2f s\n",
-            result.buf.spec().get_string_attribute("synth:options").c_str(), sample.source.c_str(),
-            secs);
-    }
-    state.stack.push_back(std::move(result));
+    run_synthesis(
+        state, command, synthesis_result(sample, sample.sources), "", [&](StackImage& result) {
+            std::vector<NamedImage>* subbands = state.subbands ? &result.subbands : nullptr;
+            if (!(sample.statistics ? synthesize_from_statistics(
+                      result.buf, *sample.statistics, opt, nullptr, subbands)
+                                    : pyramid_synthesize(result.buf, sample.buf, opt, subbands)))
+                return false;
+            if (sample.from_file) { // a synthesis of a file: a recipe can say it
+                result.has_recipe = true;
+                result.recipe.sample = sample.sources[0];
+                result.recipe.iscolorspace = sample.input_colorspace;
+                result.recipe.pyramid = opt;
+                result.recipe.pyramid.nthreads = 0;
+                result.recipe.pyramid.progress = nullptr;
+                result.recipe.subbands = state.subbands;
+                result.recipe.colorconfig = state.colorconfig_path;
+                if (const char* env = std::getenv("OCIO"); result.recipe.colorconfig.empty() && env)
+                    result.recipe.colorconfig = env;
+            }
+            return true;
+        });
 }
 
 } // namespace texsyn::cli
