@@ -475,12 +475,14 @@ TEST(Transfer, KeepsTheImagesLayoutWithTheSamplesHistograms)
         "fft=kiss:gain=1:balance=0");
     const double r = layout_correlation(out, image);
     RecordProperty("layout_correlation", std::to_string(r));
-    EXPECT_GT(r, 0.5);                          // measured 0.91 (smallest channel)
+    EXPECT_GT(r, 0.5);                          // measured 0.90 (smallest channel)
     EXPECT_LT(max_channel_w1(out, rust), 1e-4); // measured 3e-6
     // Control: a synthesis from noise has no such correlation with the image.
     opt.width = opt.height = 128;
     OIIO::ImageBuf noise = pyramid_synthesize(rust, opt);
-    EXPECT_LT(std::abs(layout_correlation(noise, image)), 0.4);
+    const double control = layout_correlation(noise, image);
+    RecordProperty("layout_correlation_noise", std::to_string(control));
+    EXPECT_LT(std::abs(control), 0.4);
 }
 
 TEST(Transfer, RefusesSizeAndOtherChannelCounts)
