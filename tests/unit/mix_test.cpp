@@ -285,6 +285,10 @@ TEST(MixStatistics, BadSamplesAreRefusedNamingThem)
     std::string error;
     EXPECT_FALSE(mix_statistics({ &a }, opt, s, error));
     EXPECT_EQ(error, "the mix takes 2 samples (palette=, pattern= and split= mix two), got 1");
+    opt.palette = -1; // only the library can say this: the option table stops at 0
+    EXPECT_FALSE(mix_statistics({ &a, &b }, opt, s, error));
+    EXPECT_EQ(error, "palette=-1 is out of range: the mix has 2 samples (0..1)");
+    opt.palette = 0;
     opt.palette.reset();
     opt.pattern.reset();
     opt.weights = { 1, 1, 1 };

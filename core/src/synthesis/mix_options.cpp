@@ -82,7 +82,7 @@ bool MixOptions::validate(std::string& error) const
     const int n = nsamples();
     for (auto [name, value] :
         { std::pair { "palette", palette }, std::pair { "pattern", pattern } })
-        if (value && *value >= n)
+        if (value && (*value < 0 || *value >= n))
             return fail(setting(name, *value) + " is out of range: the mix has " + std::to_string(n)
                 + " samples (0.." + std::to_string(n - 1) + ")");
     if (pattern && *pattern == *palette)
