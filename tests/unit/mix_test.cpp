@@ -169,7 +169,7 @@ TEST(MixOptions, TableRoundTripsAndDefaultsToNoMode)
     const auto& t = MixOptions::table();
     EXPECT_EQ(t.format(opt),
         "size=0x0:iterations=5:pyramid=steerable:scales=0:orientations=4:histogram=exact:"
-        "fft=kiss:gain=1:balance=0:palette=none:pattern=none:split=none:weights=none");
+        "fft=kiss:gain=1:balance=0:flatten=0:palette=none:pattern=none:split=none:weights=none");
     std::string error;
     EXPECT_FALSE(opt.validate(error));
     EXPECT_EQ(error,
@@ -240,12 +240,15 @@ TEST(MixOptions, EachModeIsCheckedAlone)
 
 // Weights (1, 0): the mixture's moments are sample 0's, so its basis is sample 0's own,
 // and every barycentre with weight 1 returns the table itself: bit for bit sample 0's
-// analysis.
-TEST(MixStatistics, WeightsOneZeroReproduceSampleZerosTablesExactly)
+// analysis — also with flatten=1, where the basis must be fitted to the flattened sample.
+class MixWeightsOneZero : public ::testing::TestWithParam<int> { };
+
+TEST_P(MixWeightsOneZero, ReproduceSampleZerosTablesExactly)
 {
     OIIO::ImageBuf a = linear_sample("stucco_yellow.png"), b = linear_sample("rust.png");
     MixOptions opt = mix_options(128);
     opt.weights = { 1.0f, 0.0f };
+    opt.synthesis.flatten = GetParam();
     TextureStatistics mixed, own;
     std::string error;
     ASSERT_TRUE(mix_statistics({ &a, &b }, opt, mixed, error)) << error;
@@ -264,6 +267,9 @@ TEST(MixStatistics, WeightsOneZeroReproduceSampleZerosTablesExactly)
         EXPECT_EQ(mixed.channels[c].sorted(), own.channels[c].sorted()) << c;
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Flatten, MixWeightsOneZero, ::testing::Values(0, 1),
+    [](const auto& info) { return "flatten" + std::to_string(info.param); });
 
 TEST(MixStatistics, ScalesAreCommonAndSizesMayDiffer)
 {
@@ -332,7 +338,7 @@ TEST(MixSynthesis, PaletteOfOnePatternOfAnother)
     EXPECT_EQ(out.spec().get_string_attribute("synth:method"), "mix");
     EXPECT_EQ(out.spec().get_string_attribute("synth:options"),
         "size=128x128:iterations=5:pyramid=steerable:scales=4:orientations=4:histogram=exact:"
-        "fft=kiss:gain=1:balance=0:palette=0:pattern=1:split=none:weights=none");
+        "fft=kiss:gain=1:balance=0:flatten=0:palette=0:pattern=1:split=none:weights=none");
 
     const std::vector<double> c = colour_covariance(out);
     const double to_palette = relative_frobenius(c, colour_covariance(rust));
@@ -413,7 +419,8 @@ TEST(MixSynthesis, WeightsFollowTheBarycentre)
     ASSERT_FALSE(out.has_error()) << out.geterror();
     EXPECT_EQ(out.spec().get_string_attribute("synth:options"),
         "size=128x128:iterations=5:pyramid=steerable:scales=4:orientations=4:histogram=exact:"
-        "fft=kiss:gain=1:balance=0:palette=none:pattern=none:split=none:weights=0.5,0.3,0.2");
+        "fft=kiss:gain=1:balance=0:flatten=0:palette=none:pattern=none:split=none:weights=0.5,0.3,"
+        "0.2");
 
     PlanarImage o = planes_of(out);
     for (size_t ch = 0; ch < 3; ++ch) // the final exact match: quantile spacing (3e-6)
@@ -476,7 +483,7 @@ TEST(Transfer, KeepsTheImagesLayoutWithTheSamplesHistograms)
     EXPECT_EQ(out.spec().get_string_attribute("synth:method"), "transfer");
     EXPECT_EQ(out.spec().get_string_attribute("synth:options"),
         "size=128x128:iterations=5:pyramid=steerable:scales=4:orientations=4:histogram=exact:"
-        "fft=kiss:gain=1:balance=0");
+        "fft=kiss:gain=1:balance=0:flatten=0");
     const double r = layout_correlation(out, image);
     RecordProperty("layout_correlation", std::to_string(r));
     EXPECT_GT(r, 0.5);                          // measured 0.90 (smallest channel)

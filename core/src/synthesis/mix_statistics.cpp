@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include <texsyn/homogeneity.h>
+
 namespace texsyn {
 
 namespace {
@@ -28,8 +30,10 @@ std::string channel_list(const PlanarImage& p)
     return s;
 }
 
-// Reads every sample (finite pixels) and checks that it has sample 0's channels.
-bool read_samples(const std::vector<const OIIO::ImageBuf*>& samples,
+// Reads every sample (finite pixels) and checks that it has sample 0's channels. With
+// flatten=1 the planes are flattened as analyze_texture will flatten them, so that a
+// colour basis fitted to them fits what is analysed.
+bool read_samples(const std::vector<const OIIO::ImageBuf*>& samples, const MixOptions& opt,
     std::vector<PlanarImage>& planes, std::string& error)
 {
     planes.resize(samples.size());
@@ -42,6 +46,8 @@ bool read_samples(const std::vector<const OIIO::ImageBuf*>& samples,
             error = sample_name(k) + ": " + error;
             return false;
         }
+        if (opt.synthesis.flatten)
+            flatten_illumination(planes[k], opt.synthesis.nthreads);
         const PlanarImage &a = planes[k], &b = planes[0];
         if (a.nchannels() != b.nchannels() || a.alpha_channel != b.alpha_channel) {
             error = sample_name(k) + " has " + detail::count_text(a.nchannels(), "channel") + " ("
@@ -198,7 +204,7 @@ bool mix(const std::vector<const OIIO::ImageBuf*>& samples, const MixOptions& op
     }
     std::vector<PlanarImage> planes;
     int scales = 0;
-    if (!read_samples(samples, planes, error) || !common_scales(planes, opt, scales, error))
+    if (!read_samples(samples, opt, planes, error) || !common_scales(planes, opt, scales, error))
         return false;
     if (opt.split && !detail::check_split(*opt.split, scales, error))
         return false;
