@@ -392,10 +392,11 @@ TEST_P(MixSplit, CoarseLevelsFollowSampleZeroFineLevelsSampleOne)
                 << "split=" << split << " scale " << scale;
             const double ew = scale_energy(want, scale), eo = scale_energy(other, scale);
             const double e = scale_energy(result, scale);
-            if (std::max(ew, eo) > 1.5 * std::min(ew, eo))
+            if (std::max(ew, eo) > 1.5 * std::min(ew, eo)) {
                 EXPECT_LT(std::abs(std::log(e / ew)), std::abs(std::log(e / eo)))
                     << "split=" << split << " scale " << scale << ": " << e << " want " << ew
                     << " other " << eo;
+            }
         }
     }
 }
