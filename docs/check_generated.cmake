@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
-# Fails if DOC differs from what `GEN METHOD` prints now.
-execute_process(COMMAND ${GEN} ${METHOD} OUTPUT_FILE ${OUT} RESULT_VARIABLE rc)
+# Fails if DOC differs from what `GEN ARG` prints now.
+execute_process(COMMAND ${GEN} ${ARG} OUTPUT_FILE ${OUT} RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "${GEN} failed: ${rc}")
 endif()

@@ -66,5 +66,23 @@ for mode in combined laplacian; do
   solid_slices "$out/solid_$mode.exr" "$out/$name"
   rm -f "$out/solid_$mode.exr"
 done
+# docs/mixtures.md: 128x128, so that the pictures stay small.
+oiiotool "$samples/paper_crinkled.png" -o "$out/paper_sample.png"
+oiiotool "$samples/stucco_yellow.png" -o "$out/stucco_sample.png"
+"$texsyn" --seed 1 "$samples/rust.png" "$samples/paper_crinkled.png" --mix:palette=0:pattern=1:size=128x128 -o "$out/mix_rust_paper.png"
+"$texsyn" --seed 1 "$samples/rust.png" "$samples/paper_crinkled.png" --mix:palette=1:pattern=0:size=128x128 -o "$out/mix_paper_rust.png"
+"$texsyn" --seed 1 "$samples/paper_crinkled.png" --pyramid:size=128x128 -o "$out/paper_128.png"
+"$texsyn" --seed 1 "$samples/stucco_yellow.png" --pyramid:size=128x128 -o "$out/stucco_128.png"
+"$texsyn" --seed 1 "$samples/paper_crinkled.png" "$samples/stucco_yellow.png" --mix:split=2:size=128x128 -o "$out/split_paper_stucco.png"
+"$texsyn" --seed 1 "$samples/stucco_yellow.png" "$samples/paper_crinkled.png" --mix:split=2:size=128x128 -o "$out/split_stucco_paper.png"
+strip=()
+for w in 1,0 0.75,0.25 0.5,0.5 0.25,0.75 0,1; do
+    "$texsyn" --seed 1 "$samples/rust.png" "$samples/stucco_yellow.png" --mix:weights=$w:size=128x128 -o "$out/weights_$w.png"
+    strip+=("$out/weights_$w.png")
+done
+oiiotool "${strip[@]}" --mosaic 5x1 -o "$out/weights_rust_stucco.png"
+rm -f "${strip[@]}"
+"$texsyn" --seed 1 "$samples/marble_pink.png" "$samples/stucco_yellow.png" --transfer -o "$out/transfer_marble_stucco.png"
+"$texsyn" --seed 1 "$samples/paper_crinkled.png" "$samples/marble_pink.png" --transfer -o "$out/transfer_paper_marble.png"
 rm -f "$out/stucco_tile.png" "$out/rust.tsa"
 ls -la "$out"

@@ -28,7 +28,7 @@ PyramidOptions parse_analyze_options(const std::string& command, const std::stri
                 + "= is not an analysis option (known: pyramid, scales, orientations, fft, "
                   "flatten; "
                   "give synthesis options to --pyramid)");
-    return parse_command_options<PyramidOptions>(command, modifiers);
+    return parse_pyramid_options(command, modifiers);
 }
 
 void run_analyze(CliState& state, const std::string& command, const std::string& modifiers)
@@ -41,16 +41,12 @@ void run_analyze(CliState& state, const std::string& command, const std::string&
     // No output size: the analysis keeps every scale the sample allows.
     if (!analyze_texture(sample.buf, opt, *stats, error))
         throw CliError(command + " : " + error);
-    stats->source = OIIO::Filesystem::filename(sample.source);
+    stats->source = sample_names(sample);
     stats->colorspace = sample.input_colorspace;
     stats->sample_format = sample.input_format.c_str();
-    StackImage result;
+    StackImage result = synthesis_result(sample, sample.sources);
     result.statistics = std::move(stats);
-    result.source = sample.source;
     result.from_file = sample.from_file;
-    result.input_colorspace = sample.input_colorspace;
-    result.input_format = sample.input_format;
-    result.output_colorspace = sample.output_colorspace;
     state.stack.push_back(std::move(result));
 }
 

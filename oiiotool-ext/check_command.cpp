@@ -12,15 +12,16 @@ void run_check(CliState& state, const std::string& command)
 {
     const StackImage& img = state.top(command);
     if (img.statistics)
-        throw CliError(command + " : " + img.source
+        throw CliError(command + " : " + img.sources[0]
             + " is an analysis, not an image (check the sample it was made from)");
     PlanarImage planes;
     std::string error;
     if (!planes_from_imagebuf(img.buf, planes, error))
         throw CliError(command + " : " + error);
     const HomogeneityReport r = check_homogeneity(planes, state.threads);
-    const std::string name
-        = img.file_pixels.initialized() ? img.source : "the synthesis from " + img.source;
+    const std::string name = img.file_pixels.initialized()
+        ? img.sources[0]
+        : "the synthesis from " + sample_names(img);
     std::printf("%s (%dx%d)\n", name.c_str(), r.width, r.height);
     std::printf("  homogeneity score        %6.2f   %s (1 = homogeneous; poor below %.2f)\n",
         r.score, r.poor ? "poor" : "good", homogeneity_poor_score);

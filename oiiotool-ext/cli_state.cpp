@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cli_state.h"
 
-#include <chrono>
-#include <cstdio>
+#include <OpenImageIO/filesystem.h>
 
 namespace texsyn::cli {
 
@@ -17,53 +16,40 @@ const ColorConfig& CliState::colors()
     return *m_colors;
 }
 
-std::function<void(float)> progress_reporter(const std::string& command)
-{
-    return [command](float fraction) {
-        std::fprintf(stderr, "\rtexsyn: %s %3d%%", command.c_str(), int(fraction * 100.0f + 0.5f));
-        std::fflush(stderr);
-    };
-}
-
 const char* const solid_input_message
     = "the current image is a solid texture (from --solid); it needs a 2-D image";
 
-StackImage synthesis_of(const StackImage& sample)
+std::string CliState::too_few_images(const std::string& command, int needed, int have)
 {
-    StackImage result;
-    result.source = sample.source;
-    result.input_colorspace = sample.input_colorspace;
-    result.input_format = sample.input_format;
-    result.output_colorspace = sample.output_colorspace;
-    return result;
-}
-
-double seconds_now()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
-
-void report_synthesis(const CliState& state, const std::string& command, const std::string& options,
-    const std::string& source, double start)
-{
-    if (state.verbose)
-        std::fprintf(stderr, "texsyn: %s %s from %s in %.2f s\n", command.c_str(), options.c_str(),
-            source.c_str(), seconds_now() - start);
+    if (have == 0 && needed == 1)
+        return command + " : no current image (give an input file before it)";
+    return command + " : needs " + std::to_string(needed) + " images on the stack, there "
+        + (have == 1 ? "is 1" : "are " + std::to_string(have));
 }
 
 StackImage& CliState::top(const std::string& command)
 {
     if (stack.empty())
-        throw CliError(command + " : no current image (give an input file before it)");
+        throw CliError(too_few_images(command, 1, 0));
     return stack.back();
 }
 
+namespace {
+
+void refuse_analysis(const std::string& command, const StackImage& img)
+{
+    if (img.volume)
+        throw CliError(command + " : " + solid_input_message);
+    if (img.statistics)
+        throw CliError(command + " : " + img.sources[0]
+            + " is an analysis, not an image (only --pyramid synthesizes from an analysis)");
+}
+
+} // namespace
+
 StackImage CliState::pop(const std::string& command)
 {
-    if (top(command).statistics)
-        throw CliError(command + " : " + top(command).source
-            + " is an analysis, not an image (only --pyramid synthesizes from an analysis)");
+    refuse_analysis(command, top(command));
     return pop_sample(command);
 }
 
@@ -74,6 +60,27 @@ StackImage CliState::pop_sample(const std::string& command)
     StackImage img = std::move(top(command));
     stack.pop_back();
     return img;
+}
+
+std::vector<StackImage> CliState::pop(const std::string& command, int n)
+{
+    if (int(stack.size()) < n)
+        throw CliError(too_few_images(command, n, int(stack.size())));
+    for (size_t i = stack.size() - size_t(n); i < stack.size(); ++i)
+        refuse_analysis(command, stack[i]);
+    std::vector<StackImage> images;
+    for (size_t i = stack.size() - size_t(n); i < stack.size(); ++i)
+        images.push_back(std::move(stack[i]));
+    stack.resize(stack.size() - size_t(n));
+    return images;
+}
+
+std::string sample_names(const StackImage& img)
+{
+    std::string s;
+    for (const std::string& source : img.sources)
+        s += (s.empty() ? "" : ",") + OIIO::Filesystem::filename(source);
+    return s;
 }
 
 } // namespace texsyn::cli

@@ -2,6 +2,7 @@
 // The state of one `texsyn` run: global options and the image stack (oiiotool's model).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -29,12 +30,13 @@ struct StackImage {
     std::shared_ptr<PlanarVolume> volume;
     OIIO::ImageBuf file_pixels; ///< an input's pixels as read (for --iscolorspace)
     OIIO::TypeDesc input_format = OIIO::TypeUInt8; ///< the sample file's pixel type
-    std::string source;                            ///< the sample file it came from
-    bool from_file = false;                        ///< an input file, or made from one by --analyze
-    std::string input_colorspace;                  ///< the space the sample file was in
-    std::string output_colorspace;                 ///< set by --tocolorspace; "" = default policy
-    std::vector<NamedImage> subbands;              ///< filled when --subbands is on
-    bool has_recipe = false; ///< a synthesis of a sample file: `recipe` describes it
+    /// The file it was read from, or the sample file(s) a synthesis came from.
+    std::vector<std::string> sources;
+    bool from_file = false;           ///< an input file, or made from one by --analyze
+    std::string input_colorspace;     ///< the space the sample file was in
+    std::string output_colorspace;    ///< set by --tocolorspace; "" = default policy
+    std::vector<NamedImage> subbands; ///< filled when --subbands is on
+    bool has_recipe = false;          ///< a synthesis of a sample file: `recipe` describes it
     Recipe recipe;
 };
 
@@ -70,6 +72,13 @@ struct CliState {
     StackImage pop(const std::string& command);
     /// Pops the top item, image or analysis (for commands that synthesize from either).
     StackImage pop_sample(const std::string& command);
+    /// Pops the top n images, returned in the order they were pushed; throws CliError
+    /// naming `command` if there are fewer or one is an analysis.
+    std::vector<StackImage> pop(const std::string& command, int n);
+
+    /// "CMD : no current image (…)" or "CMD : needs N images on the stack, there are H":
+    /// the message for a command that finds too few images.
+    static std::string too_few_images(const std::string& command, int needed, int have);
 
 private:
     std::unique_ptr<ColorConfig> m_colors;
@@ -86,10 +95,17 @@ void reinterpret_input(CliState& state, const std::string& colorspace);
 /// --subbands writes the multi-part inspection EXR.
 void write_output(CliState& state, const std::string& filename);
 
-/// Parses a command's modifiers with the option table of T (each option at most once);
-/// throws CliError naming the command on a bad or repeated one.
+/// The samples' file names (without folders), comma-separated: synth:sample.
+std::string sample_names(const StackImage& img);
+
+/// What a command that needs a 2-D image says when given a solid texture.
+extern const char* const solid_input_message;
+
+/// Parses a command's modifiers with its option table, each option at most once; throws
+/// CliError naming the command on a bad or repeated one.
 template <class T>
-T parse_command_options(const std::string& command, const std::string& modifiers)
+T parse_modifiers(
+    const std::string& command, const std::string& modifiers, const OptionTable<T>& table)
 {
     T opt;
     std::vector<std::pair<std::string, std::string>> pairs;
@@ -100,43 +116,38 @@ T parse_command_options(const std::string& command, const std::string& modifiers
         for (size_t j = 0; j < i; ++j)
             if (pairs[j].first == pairs[i].first)
                 throw CliError(command + " : " + pairs[i].first + " is given twice");
-        if (!T::table().set(opt, pairs[i].first, pairs[i].second, error))
+        if (!table.set(opt, pairs[i].first, pairs[i].second, error))
             throw CliError(command + " : " + error);
     }
     return opt;
 }
 
-/// What a command that needs a 2-D image says when given a solid texture.
-extern const char* const solid_input_message;
+/// A new stack image for the synthesis of `base` by a command: its colour spaces and pixel
+/// type (the defaults of -o), and `sources` for synth:sample.
+StackImage synthesis_result(const StackImage& base, std::vector<std::string> sources);
+
+/// Runs `synthesize(result)` for `command` with its progress on a terminal and, with -v, a
+/// timing line; throws CliError "<command> : <result's error><legend>" if it fails, else
+/// pushes the result. `legend` (e.g. " (sample 0 = a.png, …)") is appended only to errors
+/// that name a sample or the image.
+void run_synthesis(CliState& state, const std::string& command, StackImage result,
+    const std::string& legend, const std::function<bool(StackImage&)>& synthesize);
 
 /// A progress callback that shows "texsyn: COMMAND  NN%" on stderr.
 std::function<void(float)> progress_reporter(const std::string& command);
 
-/// A synthesis command's options: its modifiers parsed with T's table, plus the run's
-/// seed, thread count and (on a terminal or with -v) progress display.
+/// The global options a synthesis takes from the command line: seed, threads, progress.
 template <class T>
-T synthesis_options(const CliState& state, const std::string& command, const std::string& modifiers)
+void apply_run_settings(const CliState& state, const std::string& command, T& opt)
 {
-    T opt = parse_command_options<T>(command, modifiers);
     opt.seed = state.seed;
     opt.nthreads = state.threads;
     if (state.progress)
         opt.progress = progress_reporter(command);
-    return opt;
 }
 
-/// The stack entry for a synthesis from `sample`: its source file, colour spaces and pixel
-/// type carried over, no pixels yet.
-StackImage synthesis_of(const StackImage& sample);
-
-/// Ends a synthesis command's progress line and, with -v, reports "texsyn: COMMAND OPTIONS
-/// from SOURCE in N s" for a run that started at `start` (a steady_clock time in seconds).
-void report_synthesis(const CliState& state, const std::string& command, const std::string& options,
-    const std::string& source, double start);
-
-/// Now, in seconds of std::chrono::steady_clock.
-double seconds_now();
-
+/// --pyramid's options; throws CliError naming the command.
+PyramidOptions parse_pyramid_options(const std::string& command, const std::string& modifiers);
 /// --pyramid[:name=value…]: pops a sample, pushes the synthesis.
 void run_pyramid(CliState& state, const std::string& command, const std::string& modifiers);
 
@@ -157,6 +168,18 @@ void run_solid(CliState& state, const std::string& command, const std::string& m
 /// multi-part EXR of z slices for .exr (scene-linear unless --tocolorspace says otherwise),
 /// with synth:* metadata, to a temporary file in pending_outputs.
 void write_volume_output(CliState& state, const std::string& filename);
+
+/// --mix's options, validated (MixOptions::validate); throws CliError naming the command.
+MixOptions parse_mix_options(const std::string& command, const std::string& modifiers);
+/// --mix[:name=value…]: pops opt.nsamples() samples (sample 0 is the one pushed first),
+/// pushes their mixture.
+void run_mix(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// --transfer's options (the --pyramid options but size), validated; throws CliError.
+PyramidOptions parse_transfer_options(const std::string& command, const std::string& modifiers);
+/// --transfer[:name=value…]: pops the sample (top) and the image below it, pushes the
+/// image's layout with the sample's statistics.
+void run_transfer(CliState& state, const std::string& command, const std::string& modifiers);
 
 /// --recipe FILE: writes the recipe of the top image (a synthesis of a sample file), with
 /// paths relative to FILE's folder, to a temporary file in pending_outputs.

@@ -9,11 +9,17 @@ namespace texsyn::cli {
 namespace {
 
 template <class T>
+void print_field(const OptionField<T>& f, const T& defaults)
+{
+    std::printf("        %-13s %s\n        %-13s (%s; default %s)\n", f.name.c_str(),
+        f.help.c_str(), "", f.allowed.c_str(), f.format(defaults).c_str());
+}
+
+template <class T>
 void print_table(const OptionTable<T>& table, const T& defaults)
 {
     for (const auto& f : table.fields())
-        std::printf("        %-13s %s\n        %-13s (%s; default %s)\n", f.name.c_str(),
-            f.help.c_str(), "", f.allowed.c_str(), f.format(defaults).c_str());
+        print_field(f, defaults);
 }
 
 } // namespace
@@ -68,11 +74,32 @@ void print_help()
                 "                          density) or -o FILE.exr (one part per z slice).\n"
                 "                          Options:\n");
     print_table(SolidOptions::table(), SolidOptions());
-    std::printf("\nExamples:\n"
-                "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o "
-                "rust_big.exr\n"
-                "    texsyn rust.png --check\n"
-                "    texsyn marble.png --solid:size=128x128x128 -o marble.vdb\n");
+    std::printf(
+        "    --mix[:name=value...]\n"
+        "                          Heeger & Bergen 1995 section 5 texture mixture of the top\n"
+        "                          images (sample 0 is the one pushed first): one mode of\n"
+        "                          palette=I:pattern=J (colour of I, subband statistics of\n"
+        "                          J), split=S (scales >= S and the low-pass of sample 0,\n"
+        "                          finer bands of sample 1) or weights=W0,W1,...\n"
+        "                          (averaged histograms; pops one image per weight, else 2).\n"
+        "                          Options (the --pyramid ones and):\n");
+    const std::size_t shared = PyramidOptions::table().fields().size();
+    const auto& mix = MixOptions::table().fields();
+    for (std::size_t i = shared; i < mix.size(); ++i)
+        print_field(mix[i], MixOptions());
+    std::printf(
+        "    --transfer[:name=value...]\n"
+        "                          Texture transfer: pops a sample (top) and an image (below\n"
+        "                          it) and gives the image's layout the sample's statistics,\n"
+        "                          at the image's size. Options: the --pyramid ones but size\n"
+        "\n"
+        "Examples:\n"
+        "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o "
+        "rust_big.exr\n"
+        "    texsyn rust.png --check\n"
+        "    texsyn marble.png --solid:size=128x128x128 -o marble.vdb\n"
+        "    texsyn rust.png paper.png --mix:palette=0:pattern=1 -o mix.exr\n"
+        "    texsyn photo.png rust.png --transfer -o rusty_photo.exr\n");
 }
 
 void print_methods()
@@ -80,7 +107,11 @@ void print_methods()
     std::printf("pyramid    Heeger & Bergen 1995: pyramid-based histogram matching "
                 "(steerable or Laplacian), seamless\n"
                 "solid      Heeger & Bergen 1995 section 4: solid textures (3-D blocks) from a "
-                "2-D sample, seamless\n");
+                "2-D sample, seamless\n"
+                "mix        Heeger & Bergen 1995 section 5: texture mixtures (palette of one "
+                "sample and pattern of another, low and high bands, averaged histograms)\n"
+                "transfer   Heeger & Bergen 1995 section 5: match-texture applied to an image "
+                "instead of noise (its layout, the sample's statistics)\n");
 }
 
 void print_version()

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/strutil.h>
 
 #include <texsyn/io.h>
@@ -25,7 +24,7 @@ void push_analysis(CliState& state, const std::string& filename)
     if (!read_statistics(filename, *stats, error))
         throw CliError(error);
     StackImage img;
-    img.source = filename;
+    img.sources = { filename };
     img.from_file = true;
     img.input_colorspace = stats->colorspace;
     img.input_format
@@ -63,7 +62,7 @@ void push_input(CliState& state, const std::string& filename)
     }
     if (!ok)
         throw CliError(error);
-    img.source = filename;
+    img.sources = { filename };
     img.from_file = true;
     img.input_format = native.format;
     img.output_colorspace = state.pending_tocolorspace;
@@ -88,7 +87,7 @@ void reinterpret_input(CliState& state, const std::string& colorspace)
     // Kept un-associated: colour under zero alpha must survive to the output.
     if (!cc.convert_image(
             img.file_pixels, space, cc.scene_linear(), false, img.buf, error, state.threads))
-        throw CliError(img.source + ": " + error);
+        throw CliError(img.sources[0] + ": " + error);
     img.input_colorspace = space;
 }
 
@@ -120,7 +119,7 @@ void write_output(CliState& state, const std::string& filename)
             error, state.threads))
         throw CliError("-o " + filename + " : " + error);
     OIIO::ImageSpec& spec = out.specmod();
-    spec.attribute("synth:sample", OIIO::Filesystem::filename(img.source));
+    spec.attribute("synth:sample", sample_names(img));
     spec.attribute("synth:colorspace", space);
     spec.attribute("synth:commandline", state.command_line);
     spec.attribute("oiio:ColorSpace", space);
@@ -129,8 +128,8 @@ void write_output(CliState& state, const std::string& filename)
         "texsyn " + std::string(version()) + " --"
             + std::string(spec.get_string_attribute("synth:method")) + ":"
             + std::string(spec.get_string_attribute("synth:options")) + " seed "
-            + std::to_string(spec.get_int_attribute("synth:seed")) + ", sample "
-            + OIIO::Filesystem::filename(img.source) + ", " + space);
+            + std::to_string(spec.get_int_attribute("synth:seed")) + ", sample " + sample_names(img)
+            + ", " + space);
 
     // Written to a temporary file now, renamed into place when the whole run succeeded.
     const std::string tmp = temporary_path_for(filename);
@@ -151,7 +150,8 @@ void write_recipe(CliState& state, const std::string& filename)
     StackImage& img = state.top("--recipe");
     if (!img.has_recipe)
         throw CliError("--recipe " + filename
-            + " : the current image is not a synthesis of a sample file (e.g. --pyramid)");
+            + " : the current image is not a --pyramid synthesis of a sample file (recipes "
+              "describe only those)");
     Recipe recipe = img.recipe;
     recipe.tocolorspace = img.output_colorspace;
     const std::string dir = std::filesystem::path(filename).parent_path().string();

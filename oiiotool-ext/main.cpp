@@ -42,23 +42,48 @@ std::pair<std::string, std::string> split_command(const std::string& a)
 
 bool is_command(const std::string& name)
 {
-    return name == "--pyramid" || name == "--analyze" || name == "--check" || name == "--solid";
+    return name == "--pyramid" || name == "--analyze" || name == "--check" || name == "--solid"
+        || name == "--mix" || name == "--transfer";
 }
 
 // What the pre-pass knows of each item on the stack.
 enum class Kind { Image, Analysis, Solid };
 
-// Every command but --pyramid needs a 2-D image; --pyramid takes an analysis too.
-void check_command_input(const std::string& command, const std::vector<Kind>& stack)
+// Checks a command's options (throws CliError) and returns how many images it pops (a
+// command pushes one image back, --check leaves the one it reports on).
+int check_command(const std::string& name, const std::string& modifiers)
 {
-    if (stack.empty())
-        return; // "no current image", reported by the run
-    if (stack.back() == Kind::Solid)
-        throw CliError(command + " : " + solid_input_message);
-    if (stack.back() == Kind::Analysis && command == "--solid")
-        throw CliError(command
-            + " : the current item is an analysis; --solid analyses the sample itself (give "
-              "the image)");
+    if (name == "--mix")
+        return parse_mix_options(name, modifiers).nsamples();
+    if (name == "--transfer") {
+        parse_transfer_options(name, modifiers);
+        return 2;
+    }
+    if (name == "--check") {
+        if (!modifiers.empty())
+            throw CliError(name + " : takes no options (got '" + modifiers + "')");
+    } else if (name == "--analyze") {
+        parse_analyze_options(name, modifiers);
+    } else if (name == "--solid") {
+        parse_modifiers(name, modifiers, SolidOptions::table());
+    } else {
+        parse_pyramid_options(name, modifiers);
+    }
+    return 1;
+}
+
+// The items a command pops must be 2-D images (--pyramid takes an analysis too; the run
+// explains why an analysis does not suit the others).
+void check_command_inputs(const std::string& command, const std::vector<Kind>& inputs)
+{
+    for (Kind kind : inputs) {
+        if (kind == Kind::Solid)
+            throw CliError(command + " : " + solid_input_message);
+        if (kind == Kind::Analysis && command == "--solid")
+            throw CliError(command
+                + " : the current item is an analysis; --solid analyses the sample itself (give "
+                  "the image)");
+    }
 }
 
 // Solid textures are written as OpenVDB or as an EXR of z slices; .vdb holds nothing else.
@@ -120,6 +145,14 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
     std::vector<std::string> inputs, outputs, recipes, colorspaces;
     std::vector<Kind> stack; // as the run will build it, for the commands' input checks
     bool solid = false;
+    // Pops the `n` items `command` takes (checked), returning them.
+    auto pop = [&](const std::string& command, int n) {
+        if (int(stack.size()) < n)
+            throw CliError(CliState::too_few_images(command, n, int(stack.size())));
+        std::vector<Kind> popped(stack.end() - n, stack.end());
+        stack.resize(stack.size() - size_t(n));
+        return popped;
+    };
     // Everything that makes or changes an image must be followed by an -o that writes it
     // (or a --check that reports on it).
     size_t last_output = 0;
@@ -151,14 +184,17 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
                 state.data_format = data_format_argument(v);
             else if (a == "-o") {
                 outputs.push_back(v);
-                if (!stack.empty())
-                    check_output_kind(v, stack.back());
+                const Kind kind = pop(a, 1)[0]; // -o writes the top item and leaves it
+                check_output_kind(v, kind);
+                stack.push_back(kind);
             } else if (a == "--recipe") {
                 recipes.push_back(v);
-                if (!stack.empty() && stack.back() == Kind::Solid)
+                const Kind kind = pop(a, 1)[0];
+                if (kind == Kind::Solid)
                     throw CliError("--recipe " + v
                         + " : recipes describe 2-D syntheses; the current image is a solid "
                           "texture");
+                stack.push_back(kind);
             } else if (a == "--iscolorspace" || a == "--tocolorspace") {
                 check_written(i - 1);
                 colorspaces.push_back(a + " " + v);
@@ -185,25 +221,15 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             if (!is_command(name))
                 throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
             check_written(i);
-            check_command_input(name, stack);
-            if (name == "--check") {
-                if (!modifiers.empty())
-                    throw CliError(name + " : takes no options (got '" + modifiers + "')");
-                check = true;
-            } else if (name == "--analyze") {
-                parse_analyze_options(name, modifiers);
-                if (!stack.empty())
-                    stack.back() = Kind::Analysis;
-            } else if (name == "--solid") {
-                parse_command_options<SolidOptions>(name, modifiers);
-                solid = true;
-                if (!stack.empty())
-                    stack.back() = Kind::Solid;
-            } else {
-                parse_command_options<PyramidOptions>(name, modifiers);
-                if (!stack.empty())
-                    stack.back() = Kind::Image;
-            }
+            const int n = check_command(name, modifiers);
+            const std::vector<Kind> popped = pop(name, n);
+            check_command_inputs(name, popped);
+            check = check || name == "--check";
+            solid = solid || name == "--solid";
+            stack.push_back(name == "--analyze" ? Kind::Analysis
+                    : name == "--solid"         ? Kind::Solid
+                    : name == "--check"         ? popped[0]
+                                                : Kind::Image);
         } else {
             check_written(i);
             inputs.push_back(a);
@@ -283,6 +309,10 @@ void run(CliState& state, const std::vector<std::string>& args)
                 run_check(state, name);
             else if (name == "--solid")
                 run_solid(state, name, modifiers);
+            else if (name == "--mix")
+                run_mix(state, name, modifiers);
+            else if (name == "--transfer")
+                run_transfer(state, name, modifiers);
         } else {
             push_input(state, a);
         }

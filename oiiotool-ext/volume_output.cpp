@@ -22,7 +22,7 @@ void write_volume_output(CliState& state, const std::string& filename)
         throw CliError("--tocolorspace : unknown colour space '" + img.output_colorspace + "'");
 
     PlanarVolume& synthesized = *img.volume;
-    synthesized.attributes.attribute("synth:sample", OIIO::Filesystem::filename(img.source));
+    synthesized.attributes.attribute("synth:sample", sample_names(img));
     synthesized.attributes.attribute("synth:colorspace", space);
     synthesized.attributes.attribute("synth:commandline", state.command_line);
     std::string error;

@@ -523,8 +523,8 @@ TEST_F(Cli, RecipesAreWrittenForSynthesesOfFiles)
     EXPECT_EQ(recipe.pyramid.seed, 3u);
     EXPECT_EQ(recipe.pyramid.width, 40);
     expect_failure("stucco.png --recipe r2.texsyn",
-        "texsyn ERROR: --recipe r2.texsyn : the current image is not a synthesis of a sample "
-        "file (e.g. --pyramid)",
+        "texsyn ERROR: --recipe r2.texsyn : the current image is not a --pyramid synthesis of "
+        "a sample file (recipes describe only those)",
         { "stucco.png", "r.texsyn" });
     expect_failure("stucco.png --pyramid --recipe r2.json",
         "texsyn ERROR: --recipe r2.json : name the recipe *.texsyn", { "stucco.png", "r.texsyn" });
@@ -761,4 +761,121 @@ TEST_F(Cli, BadSolidRequestsAreRefused)
     expect_failure("tiny.exr --solid:size=16x16x16 -o out.vdb",
         "texsyn ERROR: --solid : sample is 8x8: the pyramid method needs at least 16x16",
         { "stucco.png", "tiny.exr" });
+}
+
+// --mix and --transfer: oiiotool stack semantics (sample 0 is pushed first; --transfer's
+// sample is on top of the image), synth:* metadata naming the inputs.
+TEST_F(Cli, MixAndTransferTakeTheirInputsFromTheStack)
+{
+    fs::copy_file(sample_path("rust.png"), dir / "rust.png");
+    fs::copy_file(sample_path("paper_crinkled.png"), dir / "paper.png");
+    const std::string fast = "size=64x64:iterations=1";
+    CliRun r
+        = texsyn("stucco.png rust.png paper.png --mix:palette=0:pattern=1:" + fast + " -o pp.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    OIIO::ImageSpec s = read("pp.exr").spec();
+    EXPECT_EQ(s.width, 64);
+    EXPECT_EQ(s.get_string_attribute("synth:method"), "mix");
+    EXPECT_EQ(s.get_string_attribute("synth:sample"), "rust.png,paper.png"); // stucco stays
+    EXPECT_EQ(s.get_string_attribute("synth:options"),
+        "size=64x64:iterations=1:pyramid=steerable:scales=3:orientations=4:histogram=exact:"
+        "fft=kiss:gain=1:balance=0:flatten=0:palette=0:pattern=1:split=none:weights=none");
+
+    r = texsyn("paper.png rust.png --mix:split=2:" + fast + " -o split.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(read("split.exr")
+                  .spec()
+                  .get_string_attribute("synth:options")
+                  .find(":palette=0:pattern=none:split=2:weights=none"),
+        std::string::npos);
+
+    r = texsyn("rust.png stucco.png paper.png --mix:weights=0.5,0.3,0.2:" + fast + " -o w.png");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(file_type("w.png"), OIIO::TypeUInt8);
+    EXPECT_EQ(
+        read("w.png").spec().get_string_attribute("synth:sample"), "rust.png,stucco.png,paper.png");
+
+    r = texsyn("paper.png rust.png --transfer:iterations=2 -o t.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    s = read("t.exr").spec();
+    EXPECT_EQ(s.width, 128); // the image's size (rust is 256x256)
+    EXPECT_EQ(s.get_string_attribute("synth:method"), "transfer");
+    EXPECT_EQ(s.get_string_attribute("synth:sample"), "rust.png");
+    EXPECT_EQ(s.get_string_attribute("synth:image"), "paper.png");
+    EXPECT_EQ(s.get_string_attribute("synth:options").find("size=128x128:iterations=2:"), 0u);
+
+    r = texsyn("-v --subbands rust.png paper.png --mix:palette=1:pattern=0:" + fast + " -o b.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("texsyn: --mix size=64x64"), std::string::npos) << r.err;
+    OIIO::ImageBuf bands((dir / "b.exr").string());
+    EXPECT_EQ(bands.nsubimages(), 1 + 1 + 3 * 4 + 1); // synth + its bands (no sample's)
+}
+
+TEST_F(Cli, BadMixAndTransferInputIsRefused)
+{
+    fs::copy_file(sample_path("rust.png"), dir / "rust.png");
+    write_sample("rgba.exr", 4, OIIO::TypeHalf);
+    write_sample("tiny.exr", 3, OIIO::TypeHalf);
+    OIIO::ImageBuf small
+        = OIIO::ImageBufAlgo::resize(read("rust.png"), "", 0, OIIO::ROI(0, 12, 0, 12, 0, 1, 0, 3));
+    ASSERT_TRUE(small.write((dir / "small.png").string()));
+    const auto inputs = { std::string("stucco.png"), std::string("rust.png"),
+        std::string("rgba.exr"), std::string("tiny.exr"), std::string("small.png") };
+    auto refused = [&](const std::string& args, const std::string& line) {
+        expect_failure(args, "texsyn ERROR: " + line, inputs);
+    };
+    // Too few images on the stack: found before anything is read.
+    refused("rust.png --mix:palette=0:pattern=1 -o out.exr",
+        "--mix : needs 2 images on the stack, there is 1");
+    refused("rust.png stucco.png --mix:weights=1,1,1 -o out.exr",
+        "--mix : needs 3 images on the stack, there are 2");
+    refused(
+        "stucco.png --transfer -o out.exr", "--transfer : needs 2 images on the stack, there is 1");
+    refused(
+        "missing.png --mix:split=1 -o out.exr", "--mix : needs 2 images on the stack, there is 1");
+    // Options.
+    refused("rust.png stucco.png --mix -o out.exr",
+        "--mix : no mix mode given (choose one mode: palette=I:pattern=J, split=S or "
+        "weights=W0,W1,...)");
+    refused("rust.png stucco.png --mix:palette=0:pattern=2 -o out.exr",
+        "--mix : pattern=2 is out of range: the mix has 2 samples (0..1)");
+    refused("rust.png stucco.png --mix:pattern=1 -o out.exr",
+        "--mix : pattern=1 needs palette= (the sample giving the colour)");
+    refused("rust.png stucco.png --mix:palette=0:palette=1 -o out.exr",
+        "--mix : palette is given twice");
+    refused("rust.png stucco.png --mix:weights=0,0 -o out.exr",
+        "--mix : weights=0,0 : the weights must not all be 0");
+    refused("rust.png stucco.png --mix:weights=1,-1 -o out.exr",
+        "--mix : weights=1,-1 : -1 is out of range (0..1000)");
+    refused("rust.png stucco.png --mix:split=17 -o out.exr",
+        "--mix : split=17 is out of range (1..16)");
+    refused("rust.png stucco.png --mix:split=5 -o out.exr",
+        "--mix : split=5 is out of range: the pyramid has 4 scales (split=1..4)");
+    refused("rust.png stucco.png --mix:palette=0:pattern=1:split=2 -o out.exr",
+        "--mix : pattern=1 does not go with split=2 (choose one mode: palette=I:pattern=J, "
+        "split=S or weights=W0,W1,...)");
+    refused("stucco.png rust.png --transfer:size=64x64 -o out.exr",
+        "--transfer : size=64x64 does not apply: a transfer's output has the image's size");
+    // Samples.
+    refused("stucco.png rgba.exr --mix:weights=1,1 -o out.exr",
+        "--mix : sample 1 has 4 channels (R,G,B,A), sample 0 3 (R,G,B): the samples of a mix "
+        "need the same channels (sample 0 = stucco.png, sample 1 = rgba.exr)");
+    refused("small.png stucco.png --mix:split=1 -o out.exr",
+        "--mix : sample 0 is 12x12: the pyramid method needs at least 16x16 (sample 0 = "
+        "small.png, sample 1 = stucco.png)");
+    refused("rgba.exr stucco.png --transfer -o out.exr",
+        "--transfer : the image has 4 channels, the sample 3: a transfer needs the same "
+        "channels (image = rgba.exr, sample = stucco.png)");
+    refused("stucco.png tiny.exr --transfer:scales=3 -o out.exr",
+        "--transfer : scales=3 is too many for a 32x32 sample (at most 2) (image = stucco.png, "
+        "sample = tiny.exr)");
+    refused("stucco.png --analyze rust.png --mix:split=1 -o out.exr",
+        "--mix : stucco.png is an analysis, not an image (only --pyramid synthesizes from an "
+        "analysis)");
+    refused("rust.png stucco.png --analyze --transfer -o out.exr",
+        "--transfer : stucco.png is an analysis, not an image (only --pyramid synthesizes from "
+        "an analysis)");
+    refused("rust.png stucco.png --mix:split=1 --recipe r.texsyn",
+        "--recipe r.texsyn : the current image is not a --pyramid synthesis of a sample file "
+        "(recipes describe only those)");
 }

@@ -3,6 +3,7 @@
 // the bundled config.
 #include <texsyn/color.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -214,6 +215,36 @@ TEST(Decorrelation, OnlyFirstChannelsTouchedAndThreadIndependent)
                 one.channels[0].size() * sizeof(float)));
     for (size_t i = 0; i < one.channels[3].size(); ++i)
         ASSERT_EQ(one.channels[3].data()[i], 0.25f);
+}
+
+// Weights equal to the pixel shares give the moments of the pooled pixels (the law of total
+// covariance), and the transform from them decorrelates the pooled image.
+TEST(Decorrelation, MixtureMomentsAreThePooledPixelsMoments)
+{
+    PlanarImage a = correlated_rgb(40, 30, 5u), b = correlated_rgb(50, 20, 6u);
+    for (size_t i = 0; i < b.channels[0].size(); ++i) // shift b: the means differ
+        b.channels[1].data()[i] += 0.3f;
+    PlanarImage pooled = make_image(int(a.channels[0].size() + b.channels[0].size()), 1, 3);
+    for (size_t c = 0; c < 3; ++c) {
+        std::copy_n(a.channels[c].data(), a.channels[c].size(), pooled.channels[c].data());
+        std::copy_n(b.channels[c].data(), b.channels[c].size(),
+            pooled.channels[c].data() + a.channels[c].size());
+    }
+    const ColorMoments m = mixture_moments(
+        { color_moments(a, 3), color_moments(b, 3) }, { 1200.0, 1000.0 }); // 40x30, 50x20
+    const ColorMoments want = color_moments(pooled, 3);
+    ASSERT_EQ(m.n, 3);
+    for (size_t i = 0; i < 3; ++i)
+        EXPECT_NEAR(m.mean[i], want.mean[i], 1e-12);
+    for (size_t i = 0; i < 9; ++i) // different summation orders
+        EXPECT_NEAR(m.covariance[i], want.covariance[i], 1e-12);
+    PlanarImage d = pooled;
+    decorrelate(d, color_transform_from_moments(m));
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(covariance(d, r, c), r == c ? 1.0 : 0.0, 1e-4);
+    EXPECT_EQ(mixture_moments({ color_moments(a, 3), color_moments(b, 2) }, { 1.0, 1.0 }).n, 0);
+    EXPECT_EQ(mixture_moments({ color_moments(a, 3) }, { 0.0 }).n, 0);
 }
 
 TEST_F(Ocio, BundledConfigLoadsAndResolves)

@@ -308,3 +308,68 @@ TEST(Histogram, Wasserstein1)
     const float half = 0.5f;
     EXPECT_NEAR(wasserstein1(QuantileTable(two, 2), QuantileTable(&half, 1)), 0.375, 1e-12);
 }
+
+// The barycentre averages quantile functions: of U[0,1] and U[2,4] with weights 1/4, 3/4 it
+// is U[1.5, 3.25]; tables of different sizes are evaluated at the larger one's knots.
+TEST(Barycenter, OfUniformsIsTheUniformOfAveragedEnds)
+{
+    const size_t n0 = 1000, n1 = 4000;
+    std::vector<float> a(n0), b(n1);
+    for (size_t i = 0; i < n0; ++i)
+        a[i] = float((i + 0.5) / n0);
+    for (size_t i = 0; i < n1; ++i)
+        b[i] = float(2.0 + 2.0 * (i + 0.5) / n1);
+    const QuantileTable ta = QuantileTable::from_sorted(a), tb = QuantileTable::from_sorted(b);
+    const QuantileTable bary = wasserstein_barycenter({ &ta, &tb }, { 1.0, 3.0 });
+    ASSERT_EQ(bary.sorted().size(), n1);
+    EXPECT_TRUE(std::is_sorted(bary.sorted().begin(), bary.sorted().end()));
+    for (double u : { 0.01, 0.25, 0.5, 0.8, 0.99 }) // the interpolation of a: float rounding
+        EXPECT_NEAR(bary.quantile(u), 0.25 * u + 0.75 * (2.0 + 2.0 * u), 1e-5) << u;
+}
+
+// Of N(0, 1) and N(3, 2^2) with weights 0.6, 0.4 it is N(1.2, 1.4^2): quantiles, mean and
+// standard deviation are the weighted ones (a bin-count average would be two-peaked, with
+// a larger spread).
+TEST(Barycenter, OfGaussiansIsTheGaussianOfAveragedMeansAndDeviations)
+{
+    auto gaussian = [](double mean, double sigma, size_t n) {
+        std::vector<float> v(n);
+        for (size_t i = 0; i < n; ++i) // exact quantiles: inverse normal cdf by bisection
+        {
+            double lo = -10, hi = 10, p = (i + 0.5) / n;
+            for (int it = 0; it < 60; ++it) {
+                const double mid = 0.5 * (lo + hi);
+                (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
+            }
+            v[i] = float(mean + sigma * 0.5 * (lo + hi));
+        }
+        return QuantileTable::from_sorted(v);
+    };
+    const QuantileTable a = gaussian(0.0, 1.0, 5000), b = gaussian(3.0, 2.0, 5000);
+    const QuantileTable want = gaussian(1.2, 1.4, 5000);
+    const QuantileTable bary = wasserstein_barycenter({ &a, &b }, { 0.6, 0.4 });
+    EXPECT_EQ(bary.sorted().size(), 5000u);
+    for (double u : { 0.001, 0.1, 0.5, 0.9, 0.999 })
+        EXPECT_NEAR(bary.quantile(u), want.quantile(u), 1e-5) << u;
+    EXPECT_LT(wasserstein1(bary, want), 1e-6);
+    double m = 0.0, s = 0.0;
+    for (float v : bary.sorted())
+        m += v;
+    m /= 5000.0;
+    for (float v : bary.sorted())
+        s += (v - m) * (v - m);
+    EXPECT_NEAR(m, 1.2, 1e-4);
+    EXPECT_NEAR(std::sqrt(s / 5000.0), 1.4, 5e-3); // the sampled tails fall short of sigma
+}
+
+TEST(Barycenter, WeightOneReturnsTheTableExactlyAndBadInputGivesEmpty)
+{
+    const QuantileTable a(random_plane(37, 11, 3u)), b(random_plane(64, 64, 4u));
+    const QuantileTable same = wasserstein_barycenter({ &a, &b }, { 2.0, 0.0 });
+    EXPECT_EQ(same.sorted(), a.sorted()); // sizes differ, yet no resampling
+    EXPECT_TRUE(wasserstein_barycenter({ &a, &b }, { 0.0, 0.0 }).empty());
+    EXPECT_TRUE(wasserstein_barycenter({ &a, &b }, { 1.0, -1.0 }).empty());
+    EXPECT_TRUE(wasserstein_barycenter({ &a }, { 1.0, 1.0 }).empty());
+    const QuantileTable none;
+    EXPECT_TRUE(wasserstein_barycenter({ &a, &none }, { 1.0, 1.0 }).empty());
+}

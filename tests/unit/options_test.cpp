@@ -103,3 +103,54 @@ TEST(Options, NumberListsParseAndRoundTrip)
     EXPECT_EQ(error, "balance=0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 has 17 values (at most 16)");
     EXPECT_EQ(opt.gain, (std::vector<float> { 1.0f, 0.5f, 1.25f })); // unchanged on failure
 }
+
+namespace {
+
+struct Inner {
+    int n = 1;
+};
+struct Outer {
+    Inner inner;
+    std::optional<int> index;
+    std::vector<float> list;
+};
+
+const OptionTable<Outer>& outer_table()
+{
+    static const OptionTable<Outer> t = [] {
+        static OptionTable<Inner> inner;
+        inner.integer("n", &Inner::n, 0, 9, "a number");
+        OptionTable<Outer> t;
+        t.include(&Outer::inner, inner, { { "n", "the inner number" } });
+        t.optional_integer("index", &Outer::index, 0, 3, "an index");
+        t.numbers("list", &Outer::list, 0.0f, 1.0f, 4, "none", "a list");
+        return t;
+    }();
+    return t;
+}
+
+} // namespace
+
+TEST(Options, IncludedOptionalAndEmptyListFieldsRoundTrip)
+{
+    const auto& t = outer_table();
+    Outer o;
+    EXPECT_EQ(t.format(o), "n=1:index=none:list=none");
+    EXPECT_EQ(t.fields()[0].help, "the inner number");
+    EXPECT_EQ(t.fields()[1].allowed, "0..3|none");
+    std::string error;
+    ASSERT_TRUE(t.set(o, "n", "7", error)) << error;
+    ASSERT_TRUE(t.set(o, "index", "2", error)) << error;
+    ASSERT_TRUE(t.set(o, "list", "0.5,0.25", error)) << error;
+    EXPECT_EQ(o.inner.n, 7);
+    EXPECT_EQ(o.index, 2);
+    EXPECT_EQ(t.format(o), "n=7:index=2:list=0.5,0.25");
+    EXPECT_FALSE(t.set(o, "index", "4", error));
+    EXPECT_EQ(error, "index=4 is out of range (0..3)");
+    EXPECT_FALSE(t.set(o, "n", "10", error));
+    EXPECT_EQ(o.inner.n, 7); // unchanged on failure
+    ASSERT_TRUE(t.set(o, "index", "none", error));
+    ASSERT_TRUE(t.set(o, "list", "none", error));
+    EXPECT_FALSE(o.index.has_value());
+    EXPECT_TRUE(o.list.empty());
+}

@@ -82,8 +82,31 @@ struct ColorTransform {
     std::vector<bool> constant;  ///< n: component carries no variance
 };
 
-/// Fits the transform to the first `ncolor` channels of `image` (double accumulation in
-/// fixed row order, so the result does not depend on threads).
+/// First and second moments of a colour distribution.
+struct ColorMoments {
+    int n = 0;                      ///< number of colour channels
+    std::vector<double> mean;       ///< n
+    std::vector<double> covariance; ///< n x n, row-major, symmetric (divided by the count)
+};
+
+/// Mean and covariance of the first `ncolor` channels of `image` (two passes, double
+/// accumulation in pixel order, so the result does not depend on threads). n = 0 for an
+/// empty image or ncolor < 1.
+ColorMoments color_moments(const PlanarImage& image, int ncolor);
+
+/// Moments of the mixture of several colour distributions with weights `weights` (>= 0,
+/// normalised here; same count as `parts`, all of the same n): mean m = sum w_i m_i and
+/// covariance sum w_i (C_i + (m_i - m)(m_i - m)^T) — the moments of the pooled pixels when
+/// the weights are the pixel shares. Used by texture mixtures (Heeger & Bergen §5) to fit
+/// one basis to several samples. n = 0 if the counts or the parts' n differ, or the weights
+/// sum to 0.
+ColorMoments mixture_moments(const std::vector<ColorMoments>& parts, std::vector<double> weights);
+
+/// The §3.5 transform of a distribution with these moments (see ColorTransform).
+ColorTransform color_transform_from_moments(const ColorMoments& moments);
+
+/// Fits the transform to the first `ncolor` channels of `image`:
+/// color_transform_from_moments(color_moments(image, ncolor)).
 ColorTransform fit_color_transform(const PlanarImage& image, int ncolor);
 
 /// Applies x -> M (x - mean) to the first t.n channels, in place.

@@ -51,6 +51,17 @@ private:
 void match_histogram(
     Plane& plane, const QuantileTable& target, HistogramMode mode, int nthreads = 0);
 
+/// The 1-D Wasserstein barycentre of distributions: the quantile function
+/// Q(u) = sum_k w_k Q_k(u), with the weights normalised to sum 1 — the average of the
+/// distributions' quantile functions, not of their bin counts (averaging two narrow peaks
+/// gives one peak in between, not two). Evaluated at n points u = (i + 0.5)/n, n the
+/// largest table among those with w_k > 0; a table of n values contributes its own values
+/// there, so weights (1, 0, …) return the first table exactly. Sorted by construction.
+/// Requires tables.size() == weights.size(), no empty table, weights >= 0 with a positive
+/// sum; returns an empty table otherwise.
+QuantileTable wasserstein_barycenter(
+    const std::vector<const QuantileTable*>& tables, const std::vector<double>& weights);
+
 /// 1-D Wasserstein distance between the value distributions of `a` and `b`
 /// (mean absolute difference of their quantile functions). Used by quality tests.
 double wasserstein1(const QuantileTable& a, const QuantileTable& b);

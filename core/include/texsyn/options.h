@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -99,8 +100,31 @@ public:
             } });
         return *this;
     }
+    /// An optional int member in [lo, hi]; unset is written (and read) as "none".
+    OptionTable& optional_integer(
+        const char* name, std::optional<int> T::*member, int lo, int hi, const char* help)
+    {
+        std::string nm = name;
+        m_fields.push_back({ nm, help, std::to_string(lo) + ".." + std::to_string(hi) + "|none",
+            [=](T& t, std::string_view v, std::string& err) {
+                if (v == "none") {
+                    (t.*member).reset();
+                    return true;
+                }
+                int64_t x = 0;
+                if (!parse_int_option(nm, v, lo, hi, x, err))
+                    return false;
+                t.*member = int(x);
+                return true;
+            },
+            [=](const T& t) {
+                return (t.*member) ? std::to_string(*(t.*member)) : std::string("none");
+            } });
+        return *this;
+    }
     /// A list of up to `max_count` numbers in [lo, hi], written "a,b,c"; an empty list
-    /// (the default) is written as `empty_text`, which must parse to an equivalent list.
+    /// (the default) is written and read as `empty_text`, which must mean the same as an
+    /// empty list wherever it would also parse as numbers.
     OptionTable& numbers(const char* name, std::vector<float> T::*member, float lo, float hi,
         size_t max_count, const char* empty_text, const char* help)
     {
@@ -110,6 +134,10 @@ public:
             "up to " + std::to_string(max_count) + " numbers " + format_number_list({ lo }) + ".."
                 + format_number_list({ hi }) + ", comma-separated",
             [=](T& t, std::string_view v, std::string& err) {
+                if (v == empty) {
+                    (t.*member).clear();
+                    return true;
+                }
                 return parse_number_list_option(nm, v, lo, hi, max_count, t.*member, err);
             },
             [=](const T& t) {
@@ -142,6 +170,26 @@ public:
                         return c.first;
                 return std::string("?");
             } });
+        return *this;
+    }
+
+    /// Every field of `other`, acting on the member `member` (options one method shares
+    /// with another, declared once). `help` replaces the help text of the named fields.
+    template <class U>
+    OptionTable& include(U T::*member, const OptionTable<U>& other,
+        const std::vector<std::pair<std::string, std::string>>& help = {})
+    {
+        for (const OptionField<U>& f : other.fields()) {
+            std::string text = f.help;
+            for (auto& h : help)
+                if (h.first == f.name)
+                    text = h.second;
+            m_fields.push_back({ f.name, text, f.allowed,
+                [member, parse = f.parse](T& t, std::string_view v, std::string& err) {
+                    return parse(t.*member, v, err);
+                },
+                [member, format = f.format](const T& t) { return format(t.*member); } });
+        }
         return *this;
     }
 

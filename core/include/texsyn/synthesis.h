@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -181,6 +182,87 @@ size_t solid_memory_estimate(int width, int height, int depth, int nchannels);
 /// memory than the machine has (checked before allocating; the message gives the amount).
 bool solid_synthesize(
     PlanarVolume& dst, const OIIO::ImageBuf& sample, const SolidOptions& opt, std::string& error);
+
+/// Options of texture mixtures (Heeger & Bergen 1995 §5). Exactly one mode:
+///  - palette=I:pattern=J — the palette (colour transform, pixel and channel histograms)
+///    of sample I, the pattern (subband histograms, analysed in I's colour basis) of J;
+///  - split=S — two samples: scales >= S and the low-pass from sample 0 ("low bands"), the
+///    high-pass residual and scales < S from sample 1 ("high bands"; Laplacian: levels);
+///    colour from sample `palette` (default 0);
+///  - weights=W0,W1,… — one sample per weight (>= 0, normalised to sum 1): every histogram
+///    is the weighted Wasserstein barycentre of the samples' (in one colour basis, the PCA
+///    of the weighted mixture of their colours).
+struct MixOptions {
+    /// The synthesis settings, as for the pyramid method: size (0x0 = the first sample's),
+    /// iterations, pyramid, scales (0 = the most every sample and the output allow),
+    /// orientations, histogram, fft, gain, balance, and the seed, threads and progress.
+    PyramidOptions synthesis;
+    std::optional<int> palette; ///< the sample giving the colour
+    std::optional<int> pattern; ///< the sample giving the subband statistics
+    std::optional<int> split;   ///< the scale where low and high bands meet, >= 1
+    std::vector<float> weights; ///< one per sample; empty = not this mode
+
+    /// How many samples the mix takes: weights.size() if weights are given, else 2.
+    int nsamples() const { return weights.empty() ? 2 : int(weights.size()); }
+
+    /// The table behind `--mix:name=value` and synth:options: the PyramidOptions table
+    /// plus palette, pattern, split (each an index or "none") and weights ("none" = empty).
+    static const OptionTable<MixOptions>& table();
+
+    /// Checks the options alone: synthesis.validate(), exactly one mode, indices below
+    /// nsamples(), pattern with palette, palette with pattern or split, palette != pattern,
+    /// split <= scales if scales is given, weights with a positive sum. False with a message
+    /// naming the option.
+    bool validate(std::string& error) const;
+};
+
+/// The statistics of a texture mixture (§5): analyses every sample with analyze_texture
+/// at one common number of scales and combines the tables as the mode says (MixOptions).
+/// palette/pattern and split: each sample in its own colour basis, so that every component
+/// has unit variance and one sample's bands agree in scale with another's pixel histograms;
+/// components are paired by rank (pc0 with pc0: the strongest colour direction of the
+/// pattern becomes the palette's strongest). A component that is constant in the sample
+/// that should give its bands (no pattern to take there, e.g. the chroma of a grey sample)
+/// keeps the palette's own bands. weights: every sample in one basis, the PCA of the
+/// weighted mixture of their colour distributions, so the tables averaged are in the same
+/// units; a constant component counts as a one-value distribution. The result's size is
+/// sample 0's (the default output size); its channel names and alpha are the palette
+/// sample's (weights: sample 0's). Requires samples.size() == opt.nsamples(), every
+/// sample at least 16x16 with finite pixels and the same channels (count and alpha
+/// position) as sample 0; sizes may differ. Fails (false, `error` names the sample by its
+/// index) otherwise, if scales= is more than a sample allows, or if split= is more than the
+/// common number of scales.
+bool mix_statistics(const std::vector<const OIIO::ImageBuf*>& samples, const MixOptions& opt,
+    TextureStatistics& out, std::string& error);
+
+/// Texture mixture (Heeger & Bergen 1995 §5): match-texture from seeded noise towards
+/// mix_statistics(samples, opt). Output: opt.synthesis.width x height (0x0: sample 0's
+/// size), the channels of the palette sample (weights: sample 0), tiling seamlessly;
+/// synth:method = "mix", synth:options = MixOptions::table() resolved. If `subbands` is
+/// not null it receives the synthesis's subbands ("synth.<band>"). Fails as
+/// mix_statistics and synthesize_from_statistics do.
+bool mix_synthesize(OIIO::ImageBuf& dst, const std::vector<const OIIO::ImageBuf*>& samples,
+    const MixOptions& opt, std::vector<NamedImage>* subbands = nullptr);
+OIIO::ImageBuf mix_synthesize(const std::vector<const OIIO::ImageBuf*>& samples,
+    const MixOptions& opt, std::vector<NamedImage>* subbands = nullptr);
+
+/// Checks options for transfer_synthesize: opt.validate(), and no size (the image gives
+/// the output's size). False with a message.
+bool validate_transfer_options(const PyramidOptions& opt, std::string& error);
+
+/// Texture transfer (§5, "apply match-texture to a second image rather than noise"):
+/// analyses `sample` (scales 0 = the most the sample and `image` allow) and runs
+/// match-texture starting from `image` decorrelated in the sample's colour basis, so the
+/// result keeps the image's layout and takes the sample's statistics. Output: the image's
+/// size, the sample's channels; synth:method = "transfer". The image need not tile, so
+/// neither does the result. `subbands` as in pyramid_synthesize. Fails if the options
+/// do not validate_transfer_options, the image has a different channel count from the
+/// sample, or as pyramid_synthesize does.
+bool transfer_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample,
+    const OIIO::ImageBuf& image, const PyramidOptions& opt,
+    std::vector<NamedImage>* subbands = nullptr);
+OIIO::ImageBuf transfer_synthesize(const OIIO::ImageBuf& sample, const OIIO::ImageBuf& image,
+    const PyramidOptions& opt, std::vector<NamedImage>* subbands = nullptr);
 
 /// texsyn's version string, e.g. "0.1.0".
 const char* version();

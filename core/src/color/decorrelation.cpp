@@ -60,33 +60,78 @@ void apply_affine(PlanarImage& image, int n, const std::vector<double>& m,
 
 } // namespace
 
-ColorTransform fit_color_transform(const PlanarImage& image, int ncolor)
+ColorMoments color_moments(const PlanarImage& image, int ncolor)
 {
-    ColorTransform t;
+    ColorMoments m;
     const int n = std::max(0, std::min(ncolor, image.nchannels()));
     const size_t npix = n > 0 ? image.channels[0].size() : 0;
     if (n == 0 || npix == 0)
-        return t;
-    t.n = n;
+        return m;
+    m.n = n;
 
     // Two passes (mean, then centred products), serial in pixel order: exact same sums
     // whatever the thread count, and no cancellation from E[x^2] - E[x]^2.
-    t.mean.assign(size_t(n), 0.0);
+    m.mean.assign(size_t(n), 0.0);
     for (int c = 0; c < n; ++c) {
         const float* p = image.channels[size_t(c)].data();
-        t.mean[size_t(c)] = std::accumulate(p, p + npix, 0.0) / double(npix);
+        m.mean[size_t(c)] = std::accumulate(p, p + npix, 0.0) / double(npix);
     }
     Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(n, n);
     std::vector<double> d(static_cast<size_t>(n));
     for (size_t i = 0; i < npix; ++i) {
         for (int c = 0; c < n; ++c)
-            d[size_t(c)] = double(image.channels[size_t(c)].data()[i]) - t.mean[size_t(c)];
+            d[size_t(c)] = double(image.channels[size_t(c)].data()[i]) - m.mean[size_t(c)];
         for (int r = 0; r < n; ++r)
             for (int c = 0; c <= r; ++c)
                 cov(r, c) += d[size_t(r)] * d[size_t(c)];
     }
     cov /= double(npix);
     cov = cov.selfadjointView<Eigen::Lower>();
+    m.covariance.assign(cov.data(), cov.data() + n * n); // symmetric: either order
+    return m;
+}
+
+ColorMoments mixture_moments(const std::vector<ColorMoments>& parts, std::vector<double> weights)
+{
+    ColorMoments m;
+    if (parts.empty() || parts.size() != weights.size())
+        return m;
+    const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
+    if (!(total > 0.0))
+        return m;
+    const int n = parts[0].n;
+    for (const ColorMoments& p : parts)
+        if (p.n != n)
+            return m;
+    m.n = n;
+    m.mean.assign(size_t(n), 0.0);
+    m.covariance.assign(size_t(n * n), 0.0);
+    for (double& w : weights)
+        w /= total;
+    for (size_t i = 0; i < parts.size(); ++i)
+        for (int c = 0; c < n; ++c)
+            m.mean[size_t(c)] += weights[i] * parts[i].mean[size_t(c)];
+    // Law of total covariance: within-part covariance plus the spread of the part means.
+    for (size_t i = 0; i < parts.size(); ++i)
+        for (int r = 0; r < n; ++r)
+            for (int c = 0; c < n; ++c) {
+                const double dr = parts[i].mean[size_t(r)] - m.mean[size_t(r)];
+                const double dc = parts[i].mean[size_t(c)] - m.mean[size_t(c)];
+                m.covariance[size_t(r * n + c)]
+                    += weights[i] * (parts[i].covariance[size_t(r * n + c)] + dr * dc);
+            }
+    return m;
+}
+
+ColorTransform color_transform_from_moments(const ColorMoments& moments)
+{
+    ColorTransform t;
+    const int n = moments.n;
+    if (n < 1)
+        return t;
+    t.n = n;
+    t.mean = moments.mean;
+    const Eigen::MatrixXd cov = Eigen::Map<const Eigen::MatrixXd>(moments.covariance.data(), n, n);
 
     // C = U S^2 U^T. Eigen returns eigenvalues ascending; take them descending.
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cov);
@@ -108,6 +153,11 @@ ColorTransform fit_color_transform(const PlanarImage& image, int ncolor)
         }
     }
     return t;
+}
+
+ColorTransform fit_color_transform(const PlanarImage& image, int ncolor)
+{
+    return color_transform_from_moments(color_moments(image, ncolor));
 }
 
 void decorrelate(PlanarImage& image, const ColorTransform& t, int nthreads)

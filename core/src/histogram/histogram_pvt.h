@@ -9,9 +9,9 @@
 namespace texsyn {
 namespace histogram_pvt {
 
-/// Q(u) of sorted values s[0..m-1]: linear interpolation at position u*m - 0.5, clamped.
-/// One definition, so match_histogram and QuantileTable::quantile agree bit for bit.
-inline float quantile_of_sorted(const float* s, size_t m, double u)
+/// Q(u) of sorted values s[0..m-1]: linear interpolation at position u*m - 0.5, clamped,
+/// in double (exact integrals and barycentres need it unrounded).
+inline double quantile_of_sorted_d(const float* s, size_t m, double u)
 {
     const double pos = u * double(m) - 0.5;
     if (!(pos > 0.0)) // also catches NaN u
@@ -20,8 +20,15 @@ inline float quantile_of_sorted(const float* s, size_t m, double u)
         return s[m - 1];
     const size_t i = size_t(pos);
     const double f = pos - double(i);
-    // a + f*(b - a) in double stays in [a, b] after rounding to float: monotone in u.
-    return float(double(s[i]) + f * (double(s[i + 1]) - double(s[i])));
+    return double(s[i]) + f * (double(s[i + 1]) - double(s[i]));
+}
+
+/// The same, rounded to float. One definition, so match_histogram and
+/// QuantileTable::quantile agree bit for bit; a + f*(b - a) in double stays in [a, b] after
+/// rounding to float, so it is monotone in u.
+inline float quantile_of_sorted(const float* s, size_t m, double u)
+{
+    return float(quantile_of_sorted_d(s, m, u));
 }
 
 /// Orders the n values by (value, index) with an O(n) LSD radix sort. Returns n packed

@@ -37,21 +37,6 @@ float QuantileTable::quantile(double u) const
 
 namespace {
 
-// Q(u) in double, the same piecewise-linear function as quantile() without the final
-// rounding to float, so that wasserstein1 of identical tables is exactly 0.
-double quantile_d(const std::vector<float>& s, double u)
-{
-    const size_t m = s.size();
-    const double pos = u * double(m) - 0.5;
-    if (!(pos > 0.0))
-        return s[0];
-    if (pos >= double(m - 1))
-        return s[m - 1];
-    const size_t i = size_t(pos);
-    const double f = pos - double(i);
-    return double(s[i]) + f * (double(s[i + 1]) - double(s[i]));
-}
-
 // Integral over [u0, u1] of |d| for d linear from d0 to d1.
 double abs_linear_integral(double d0, double d1, double len)
 {
@@ -83,7 +68,8 @@ double wasserstein1(const QuantileTable& a, const QuantileTable& b)
             ++ka;
         if (ub == u1)
             ++kb;
-        const double d1 = quantile_d(sa, u1) - quantile_d(sb, u1);
+        const double d1 = histogram_pvt::quantile_of_sorted_d(sa.data(), ma, u1)
+            - histogram_pvt::quantile_of_sorted_d(sb.data(), mb, u1);
         sum += abs_linear_integral(d0, d1, u1 - u0);
         u0 = u1;
         d0 = d1;

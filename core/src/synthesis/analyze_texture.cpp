@@ -122,14 +122,8 @@ bool analyze_texture(const OIIO::ImageBuf& sample, const PyramidOptions& opt,
     TextureStatistics& stats, std::string& error, const ColorTransform* basis,
     std::vector<NamedImage>* subbands)
 {
-    try {
-        return analyse(sample, opt, stats, error, basis, subbands);
-    } catch (const std::bad_alloc&) {
-        error = "analyze_texture: out of memory";
-    } catch (const std::exception& e) {
-        error = std::string("analyze_texture: ") + e.what();
-    }
-    return false;
+    return detail::guarded(error, "analyze_texture",
+        [&] { return analyse(sample, opt, stats, error, basis, subbands); });
 }
 
 } // namespace texsyn

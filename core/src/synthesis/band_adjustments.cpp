@@ -3,6 +3,7 @@
 // orientation-energy balance, applied to the sample's band statistics.
 #include "synthesis_pvt.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace texsyn::detail {
@@ -20,14 +21,13 @@ float band_gain(const PyramidOptions& opt, int band, int nbands)
 {
     if (band == nbands - 1) // the low-pass residual
         return 1.0f;
-    if (opt.pyramid == PyramidKind::Laplacian) // "L<band>"
-        return list_value(opt.gain, band, 1.0f);
-    if (band == 0) // the high-pass residual follows the finest scale
-        return list_value(opt.gain, 0, 1.0f);
-    const int k = opt.orientations;
-    const int scale = (band - 1) / k, orientation = (band - 1) % k;
+    const BandPosition pos = band_position(opt.pyramid, opt.orientations, band, nbands);
+    const int scale = std::max(0, pos.scale); // the high-pass residual follows the finest scale
     const double b = list_value(opt.balance, scale, 0.0f);
-    const double tilt = 1.0 + b * std::cos(2.0 * M_PI * orientation / k);
+    const int k = opt.orientations;
+    const double tilt = opt.pyramid == PyramidKind::Steerable && pos.scale >= 0
+        ? 1.0 + b * std::cos(2.0 * M_PI * pos.orientation / k)
+        : 1.0;
     return float(double(list_value(opt.gain, scale, 1.0f)) * tilt);
 }
 

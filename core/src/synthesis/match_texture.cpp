@@ -160,25 +160,12 @@ bool synthesize(OIIO::ImageBuf& dst, const TextureStatistics& stats, const Pyram
     return true;
 }
 
-template <class F>
-bool guarded(OIIO::ImageBuf& dst, const char* name, F&& f)
-{
-    try {
-        return f();
-    } catch (const std::bad_alloc&) {
-        dst.errorfmt("{}: out of memory", name);
-    } catch (const std::exception& e) {
-        dst.errorfmt("{}: {}", name, e.what());
-    }
-    return false;
-}
-
 } // namespace
 
 bool synthesize_from_statistics(OIIO::ImageBuf& dst, const TextureStatistics& stats,
     const PyramidOptions& opt, const OIIO::ImageBuf* start, std::vector<NamedImage>* subbands)
 {
-    return guarded(dst, "synthesize_from_statistics",
+    return detail::guarded(dst, "synthesize_from_statistics",
         [&] { return synthesize(dst, stats, opt, start, subbands); });
 }
 
@@ -199,10 +186,8 @@ bool pyramid_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample,
 OIIO::ImageBuf pyramid_synthesize(
     const OIIO::ImageBuf& sample, const PyramidOptions& opt, std::vector<NamedImage>* subbands)
 {
-    OIIO::ImageBuf result;
-    if (!pyramid_synthesize(result, sample, opt, subbands) && !result.has_error())
-        result.errorfmt("pyramid_synthesize() failed");
-    return result;
+    return detail::value_form("pyramid_synthesize",
+        [&](OIIO::ImageBuf& dst) { return pyramid_synthesize(dst, sample, opt, subbands); });
 }
 
 } // namespace texsyn

@@ -10,6 +10,11 @@
 
 namespace texsyn::detail {
 
+std::string count_text(int n, const std::string& noun)
+{
+    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 std::string format_bytes(double bytes)
 {
     const char* units[] = { "B", "KB", "MB", "GB", "TB", "PB", "EB" };

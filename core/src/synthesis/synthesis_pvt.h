@@ -3,12 +3,57 @@
 #pragma once
 
 #include <memory>
+#include <new>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <texsyn/synthesis.h>
 
 namespace texsyn::detail {
+
+/// Runs f() (returning bool) and turns a std::bad_alloc or other exception into false
+/// with "<name>: out of memory" / "<name>: <what>" in `error`: nothing throws across the
+/// public API.
+template <class F>
+bool guarded(std::string& error, const char* name, F&& f)
+{
+    try {
+        return f();
+    } catch (const std::bad_alloc&) {
+        error = std::string(name) + ": out of memory";
+    } catch (const std::exception& e) {
+        error = std::string(name) + ": " + e.what();
+    }
+    return false;
+}
+
+/// The same for the ImageBuf forms: the message goes to dst.errorfmt().
+template <class F>
+bool guarded(OIIO::ImageBuf& dst, const char* name, F&& f)
+{
+    std::string error;
+    if (guarded(error, name, std::forward<F>(f)))
+        return true;
+    if (!error.empty())
+        dst.errorfmt("{}", error);
+    return false;
+}
+
+/// The value form of an ImageBufAlgo-style function: calls f(dst) on a new ImageBuf and
+/// guarantees has_error() if it returned false.
+template <class F>
+OIIO::ImageBuf value_form(const char* name, F&& f)
+{
+    OIIO::ImageBuf result;
+    if (!f(result) && !result.has_error())
+        result.errorfmt("{}() failed", name);
+    return result;
+}
+
+/// "1 channel", "3 channels".
+std::string count_text(int n, const std::string& noun);
 
 /// "1.5 GB" style.
 std::string format_bytes(double bytes);
@@ -38,6 +83,19 @@ void append_subbands(const std::string& prefix, const std::vector<std::string>& 
 } // namespace texsyn::detail
 
 namespace texsyn::detail {
+
+/// Where band `band` of a pyramid with `nbands` bands sits (band order as in pyramid.h):
+/// its scale (0 finest; -1 for the steerable high-pass residual, the number of scales for
+/// the low-pass) and orientation (0 for all but the steerable oriented bands).
+struct BandPosition {
+    int scale = 0;
+    int orientation = 0;
+};
+BandPosition band_position(PyramidKind kind, int orientations, int band, int nbands);
+
+/// False (with "split=S is out of range: the pyramid has N scales (split=1..N)") unless
+/// 1 <= split <= scales.
+bool check_split(int split, int scales, std::string& error);
 
 /// The factor opt.gain and opt.balance give band `band` of a pyramid with
 /// `nbands` bands (band order as in pyramid.h; the low-pass gets 1).
