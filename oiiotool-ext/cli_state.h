@@ -11,6 +11,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/color.h>
+#include <texsyn/neighborhood.h>
 #include <texsyn/recipe.h>
 #include <texsyn/synthesis.h>
 
@@ -180,6 +181,22 @@ PyramidOptions parse_transfer_options(const std::string& command, const std::str
 /// --transfer[:name=value…]: pops the sample (top) and the image below it, pushes the
 /// image's layout with the sample's statistics.
 void run_transfer(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// --neighborhood's options and the tool's own map=FILE (the source map to write).
+struct NeighborhoodCommand {
+    NeighborhoodOptions options;
+    std::string map;
+};
+/// Parses and validates --neighborhood's modifiers; throws CliError naming the command.
+NeighborhoodCommand parse_neighborhood_options(
+    const std::string& command, const std::string& modifiers);
+/// --neighborhood[:name=value…]: pops a sample, pushes the synthesis; with map=FILE also
+/// writes the source map (to a temporary file in pending_outputs).
+void run_neighborhood(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// --apply-map MAP IMAGE: reads IMAGE (an input like any other), rearranges its pixels by
+/// the source map MAP, and pushes the result, which keeps IMAGE's colour space on output.
+void run_apply_map(CliState& state, const std::string& map_file, const std::string& image_file);
 
 /// --recipe FILE: writes the recipe of the top image (a synthesis of a sample file), with
 /// paths relative to FILE's folder, to a temporary file in pending_outputs.

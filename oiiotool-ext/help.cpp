@@ -92,6 +92,17 @@ void print_help()
         "                          Texture transfer: pops a sample (top) and an image (below\n"
         "                          it) and gives the image's layout the sample's statistics,\n"
         "                          at the image's size. Options: the --pyramid ones but size\n"
+        "    --neighborhood[:name=value...]\n"
+        "                          Wei & Levoy 2000 neighbourhood synthesis of the current\n"
+        "                          image (scanline order, causal L-shaped neighbourhoods,\n"
+        "                          Gaussian pyramid, toroidal). map=FILE.exr also writes the\n"
+        "                          sample coordinate of every output pixel. Options:\n");
+    print_table(NeighborhoodOptions::table(), NeighborhoodOptions());
+    std::printf(
+        "    --apply-map MAP IMAGE Read IMAGE (aligned with the sample of a --neighborhood\n"
+        "                          run) and rearrange its pixels by that run's source map\n"
+        "                          MAP: height, normal or roughness maps follow the colour.\n"
+        "                          Written in IMAGE's colour space by default\n"
         "\n"
         "Examples:\n"
         "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o "
@@ -99,7 +110,9 @@ void print_help()
         "    texsyn rust.png --check\n"
         "    texsyn marble.png --solid:size=128x128x128 -o marble.vdb\n"
         "    texsyn rust.png paper.png --mix:palette=0:pattern=1 -o mix.exr\n"
-        "    texsyn photo.png rust.png --transfer -o rusty_photo.exr\n");
+        "    texsyn photo.png rust.png --transfer -o rusty_photo.exr\n"
+        "    texsyn grass.png --neighborhood:size=512x512:map=coords.exr -o grass_big.exr\n"
+        "    texsyn --apply-map coords.exr grass_height.png -o grass_height_big.exr\n");
 }
 
 void print_methods()
@@ -111,7 +124,9 @@ void print_methods()
                 "mix        Heeger & Bergen 1995 section 5: texture mixtures (palette of one "
                 "sample and pattern of another, low and high bands, averaged histograms)\n"
                 "transfer   Heeger & Bergen 1995 section 5: match-texture applied to an image "
-                "instead of noise (its layout, the sample's statistics)\n");
+                "instead of noise (its layout, the sample's statistics)\n"
+                "neighborhood  Wei & Levoy 2000: multi-resolution neighbourhood search "
+                "(exhaustive, tsvq, kdtree, coherent), toroidal, with source maps\n");
 }
 
 void print_version()

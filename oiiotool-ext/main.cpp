@@ -43,15 +43,17 @@ std::pair<std::string, std::string> split_command(const std::string& a)
 bool is_command(const std::string& name)
 {
     return name == "--pyramid" || name == "--analyze" || name == "--check" || name == "--solid"
-        || name == "--mix" || name == "--transfer";
+        || name == "--mix" || name == "--transfer" || name == "--neighborhood";
 }
 
 // What the pre-pass knows of each item on the stack.
 enum class Kind { Image, Analysis, Solid };
 
 // Checks a command's options (throws CliError) and returns how many images it pops (a
-// command pushes one image back, --check leaves the one it reports on).
-int check_command(const std::string& name, const std::string& modifiers)
+// command pushes one image back, --check leaves the one it reports on). Files a command
+// writes besides -o (--neighborhood's map=) are added to `outputs`.
+int check_command(
+    const std::string& name, const std::string& modifiers, std::vector<std::string>& outputs)
 {
     if (name == "--mix")
         return parse_mix_options(name, modifiers).nsamples();
@@ -66,6 +68,10 @@ int check_command(const std::string& name, const std::string& modifiers)
         parse_analyze_options(name, modifiers);
     } else if (name == "--solid") {
         parse_modifiers(name, modifiers, SolidOptions::table());
+    } else if (name == "--neighborhood") {
+        const std::string map = parse_neighborhood_options(name, modifiers).map;
+        if (!map.empty())
+            outputs.push_back(map);
     } else {
         parse_pyramid_options(name, modifiers);
     }
@@ -142,7 +148,7 @@ void check_output_path(
 enum class Early { Run, Exit };
 Early parse_globals(CliState& state, const std::vector<std::string>& args)
 {
-    std::vector<std::string> inputs, outputs, recipes, colorspaces;
+    std::vector<std::string> inputs, outputs, recipes, colorspaces, side_outputs;
     std::vector<Kind> stack; // as the run will build it, for the commands' input checks
     bool solid = false;
     // Pops the `n` items `command` takes (checked), returning them.
@@ -164,6 +170,8 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             last_output = i;
         else if (takes_argument(args[i]))
             ++i;
+        else if (args[i] == "--apply-map")
+            i += 2;
     auto check_written = [&](size_t i) {
         if (last_output > 0 && i > last_output) // no -o at all is reported after the loop
             throw CliError(args[i] + " : has no effect, nothing is written after it (add -o FILE)");
@@ -199,6 +207,15 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
                 check_written(i - 1);
                 colorspaces.push_back(a + " " + v);
             }
+        } else if (a == "--apply-map") {
+            if (i + 2 >= args.size())
+                throw CliError("--apply-map : needs two arguments, the source map and the image "
+                               "(--apply-map coords.exr height.png)");
+            check_written(i);
+            inputs.push_back(args[i + 1]);
+            inputs.push_back(args[i + 2]);
+            i += 2;
+            stack.push_back(Kind::Image);
         } else if (is_flag(a)) {
             if (a == "--help" || a == "-h") {
                 print_help();
@@ -221,7 +238,7 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             if (!is_command(name))
                 throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
             check_written(i);
-            const int n = check_command(name, modifiers);
+            const int n = check_command(name, modifiers, side_outputs);
             const std::vector<Kind> popped = pop(name, n);
             check_command_inputs(name, popped);
             check = check || name == "--check";
@@ -245,6 +262,12 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
         check_output_path("--recipe", recipe, inputs);
         if (!OIIO::Strutil::iends_with(recipe, ".texsyn"))
             throw CliError("--recipe " + recipe + " : name the recipe *.texsyn");
+    }
+    for (const std::string& out : side_outputs) {
+        check_output_path("map=", out, inputs);
+        for (const std::string& other : outputs)
+            if (other == out)
+                throw CliError("map=" + out + " : is also written by -o");
     }
     for (const std::string& out : outputs) {
         check_output_path("-o", out, inputs);
@@ -297,6 +320,9 @@ void run(CliState& state, const std::vector<std::string>& args)
                 else
                     state.stack.back().output_colorspace = v;
             }
+        } else if (a == "--apply-map") {
+            run_apply_map(state, args[i + 1], args[i + 2]);
+            i += 2;
         } else if (is_flag(a)) {
             continue;
         } else if (!a.empty() && a[0] == '-') {
@@ -313,6 +339,8 @@ void run(CliState& state, const std::vector<std::string>& args)
                 run_mix(state, name, modifiers);
             else if (name == "--transfer")
                 run_transfer(state, name, modifiers);
+            else if (name == "--neighborhood")
+                run_neighborhood(state, name, modifiers);
         } else {
             push_input(state, a);
         }

@@ -32,6 +32,12 @@ bool parse_number_list_option(std::string_view name, std::string_view text, floa
 /// "a,b,c" with the shortest text that reads back as the same floats.
 std::string format_number_list(const std::vector<float>& values);
 
+/// Parses "a,b,c": 1..max_count decimal integers, each in [lo, hi].
+bool parse_int_list_option(std::string_view name, std::string_view text, int lo, int hi,
+    size_t max_count, std::vector<int>& values, std::string& error);
+/// "a,b,c".
+std::string format_int_list(const std::vector<int>& values);
+
 /// One option of an options struct T.
 template <class T>
 struct OptionField {
@@ -143,6 +149,36 @@ public:
             [=](const T& t) {
                 return (t.*member).empty() ? empty : format_number_list(t.*member);
             } });
+        return *this;
+    }
+    /// A float member in [lo, hi].
+    OptionTable& real(const char* name, float T::*member, float lo, float hi, const char* help)
+    {
+        std::string nm = name;
+        m_fields.push_back(
+            { nm, help, format_number_list({ lo }) + ".." + format_number_list({ hi }),
+                [=](T& t, std::string_view v, std::string& err) {
+                    std::vector<float> x;
+                    if (!parse_number_list_option(nm, v, lo, hi, 1, x, err))
+                        return false;
+                    t.*member = x[0];
+                    return true;
+                },
+                [=](const T& t) { return format_number_list({ t.*member }); } });
+        return *this;
+    }
+    /// A non-empty list of up to `max_count` integers in [lo, hi], written "a,b,c".
+    OptionTable& integers(const char* name, std::vector<int> T::*member, int lo, int hi,
+        size_t max_count, const char* help)
+    {
+        std::string nm = name;
+        m_fields.push_back({ nm, help,
+            "up to " + std::to_string(max_count) + " integers " + std::to_string(lo) + ".."
+                + std::to_string(hi) + ", comma-separated",
+            [=](T& t, std::string_view v, std::string& err) {
+                return parse_int_list_option(nm, v, lo, hi, max_count, t.*member, err);
+            },
+            [=](const T& t) { return format_int_list(t.*member); } });
         return *this;
     }
     /// An enum member chosen by name.

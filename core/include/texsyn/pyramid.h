@@ -81,6 +81,11 @@ int max_pyramid_scales(int sample_width, int sample_height);
 std::unique_ptr<Pyramid> make_laplacian_pyramid(
     int width, int height, int scales, Boundary boundary);
 
+/// One level of a Gaussian pyramid: `image` blurred with the separable (1,4,6,4,1)/16
+/// kernel and subsampled to ceil(width/2) x ceil(height/2) (the Laplacian pyramid's reduce
+/// step). `boundary`: Circular for a tiling image, Reflect for a sample.
+Plane reduce_plane(const Plane& image, Boundary boundary, int nthreads = 0);
+
 /// Steerable pyramid, Fourier-domain and self-inverting (a tight frame): high-pass
 /// residual, `scales` levels of `orientations` (1..8) oriented bands, low-pass residual.
 /// Only the low-pass is subsampled: the bands of scale s are ceil(width/2^s) x

@@ -124,6 +124,43 @@ std::string format_number_list(const std::vector<float>& values)
     return s;
 }
 
+bool parse_int_list_option(std::string_view name, std::string_view text, int lo, int hi,
+    size_t max_count, std::vector<int>& values, std::string& error)
+{
+    std::vector<int> v;
+    std::string_view rest = text;
+    while (true) {
+        const size_t comma = rest.find(',');
+        const std::string_view piece = rest.substr(0, comma);
+        int64_t x = 0;
+        if (!parse_int_option(name, piece, lo, hi, x, error)) {
+            error = std::string(name) + "=" + std::string(text) + " : " + std::string(piece)
+                + " is not an integer in " + std::to_string(lo) + ".." + std::to_string(hi)
+                + (max_count > 1 ? " (expected e.g. 9,7,5)" : "");
+            return false;
+        }
+        v.push_back(int(x));
+        if (comma == std::string_view::npos)
+            break;
+        rest.remove_prefix(comma + 1);
+    }
+    if (v.size() > max_count) {
+        error = std::string(name) + "=" + std::string(text) + " has " + std::to_string(v.size())
+            + " values (at most " + std::to_string(max_count) + ")";
+        return false;
+    }
+    values = std::move(v);
+    return true;
+}
+
+std::string format_int_list(const std::vector<int>& values)
+{
+    std::string s;
+    for (int x : values)
+        s += (s.empty() ? "" : ",") + std::to_string(x);
+    return s;
+}
+
 bool split_option_string(std::string_view text,
     std::vector<std::pair<std::string, std::string>>& pairs, std::string& error)
 {

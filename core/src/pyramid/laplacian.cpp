@@ -89,6 +89,14 @@ private:
 
 } // namespace
 
+Plane reduce_plane(const Plane& image, Boundary boundary, int nthreads)
+{
+    Plane out;
+    resample(image, reduce_taps(image.width(), boundary), reduce_taps(image.height(), boundary),
+        out, nthreads);
+    return out;
+}
+
 std::unique_ptr<Pyramid> make_laplacian_pyramid(
     int width, int height, int scales, Boundary boundary)
 {

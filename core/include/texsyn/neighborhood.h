@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: Apache-2.0
+// The neighbourhood method: Wei & Levoy 2000 "Fast Texture Synthesis using Tree-structured
+// Vector Quantization" (../shared/papers/wei-levoy-implementation-report.txt), with the
+// search back-ends of search.h and source-coordinate maps.
+//
+// Same conventions as synthesis.h: ImageBufAlgo-style two forms, errors in dst, scene-linear
+// float in and out, bit-identical for a seed whatever nthreads is.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <texsyn/options.h>
+#include <texsyn/search.h>
+
+namespace texsyn {
+
+/// Which output pixels a neighbourhood holds (the report's Figure 2 and Figure 3).
+enum class NeighborhoodShape {
+    /// The causal L: the (n-1)/2 rows above and the (n-1)/2 pixels to the left, n wide —
+    /// pixels already synthesized in scanline order (Wei & Levoy's).
+    Causal,
+    /// The whole n x n square but its centre, unsynthesized noise included: the report's
+    /// Figure 3(c), kept as a debug option to show why the L is used.
+    Square,
+};
+
+/// Options of the neighbourhood method. Defaults are Wei & Levoy's where they give one.
+struct NeighborhoodOptions {
+    int width = 0; ///< output size; 0x0 = the sample's size
+    int height = 0;
+    int levels = 4; ///< Gaussian pyramid levels (1 = single resolution)
+    /// Neighbourhood width n (odd) per level, finest first; one value = every level;
+    /// missing coarser levels repeat the last value.
+    std::vector<int> n = { 9 };
+    int coarse = 5; ///< side (odd) of the square at the next coarser level
+    NeighborhoodShape shape = NeighborhoodShape::Causal;
+    SearchMethod search = SearchMethod::KdTree;
+    int candidates = 1; ///< tsvq: leaves visited; kdtree: matches re-ranked (see search.h)
+    int dims = 0;       ///< kdtree: PCA components kept; 0 = 95% of the variance
+    float eps = 0.0f;   ///< kdtree: approximation factor
+    int coherence = 2;  ///< coherent: k of k-coherence
+    int merge = 0;      ///< coherent: 1 = also ask the kd-tree
+    uint64_t seed = 0;  ///< set by the tool's --seed, not a `:name=` option
+    int nthreads = 0;   ///< 0 = OIIO's default; never changes the result
+    /// Called with the fraction done (0..1) from the calling thread; may be empty.
+    std::function<void(float)> progress;
+
+    /// The table behind `--neighborhood:name=value`, recipes, synth:options and the docs.
+    static const OptionTable<NeighborhoodOptions>& table();
+
+    /// Checks the options alone (ranges, odd sizes). False with a message.
+    bool validate(std::string& error) const;
+
+    /// n at level `level` (0 finest).
+    int n_at(int level) const;
+};
+
+/// Bytes of memory a synthesis needs (the estimate the size check uses): the sample's
+/// neighbourhood vectors of the finest level and the searcher built over them dominate.
+size_t neighborhood_memory_estimate(int sample_width, int sample_height, int nchannels,
+    int out_width, int out_height, const NeighborhoodOptions& opt);
+
+/// Wei & Levoy's synthesis. Gaussian pyramids (the (1,4,6,4,1)/16 kernel) of the sample
+/// (`levels` levels) and of the output; the output's levels start as noise drawn from the
+/// sample (each pixel a seeded random sample pixel of that level) and are synthesized
+/// coarsest first, each in scanline order: the neighbourhood of an output pixel is the
+/// causal L of width n at its level (toroidal: it reaches across the output's edges) plus,
+/// below the coarsest level, the coarse x coarse square around its parent at the next
+/// coarser (already synthesized) level; it is compared with every sample neighbourhood
+/// that lies inside the sample (coarse squares reflect at the sample's edges) through
+/// the chosen search back-end, and the best match's pixel is copied. Every channel (colour,
+/// alpha, extra channels) is part of the neighbourhood and copied.
+///
+/// `dst` receives opt.width x opt.height (any size) with the sample's channels; if
+/// `source_map` is not null it receives a 2-channel float image ("x", "y") of the same size
+/// holding, per output pixel, the integer sample coordinate it was copied from, with
+/// "synth:sample_size" = "WxH" (apply_source_map takes it).
+/// Fails (false, message in dst) on invalid options, a sample with an error or NaN/Inf
+/// pixels, a sample (at any level) smaller than that level's neighbourhood (the message
+/// gives the most levels it allows), an output level smaller than its neighbourhood, or an
+/// output that would need more memory than the machine has (checked before allocating).
+bool neighborhood_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample,
+    const NeighborhoodOptions& opt, OIIO::ImageBuf* source_map = nullptr);
+OIIO::ImageBuf neighborhood_synthesize(const OIIO::ImageBuf& sample, const NeighborhoodOptions& opt,
+    OIIO::ImageBuf* source_map = nullptr);
+
+/// Re-applies a synthesis to an image aligned with its sample (height, normal, roughness…
+/// maps of the same material): dst(x, y) = image(map(x, y)) for every channel, values
+/// copied exactly. `map` is a source map as neighborhood_synthesize writes it; `image`
+/// must have the size recorded in its "synth:sample_size" (or, without it, contain every
+/// coordinate). Fails (false, message in dst) if the map does not have 2 channels or holds
+/// non-integer, non-finite or out-of-range coordinates, or if the sizes disagree.
+bool apply_source_map(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf& image);
+OIIO::ImageBuf apply_source_map(const OIIO::ImageBuf& map, const OIIO::ImageBuf& image);
+
+} // namespace texsyn
