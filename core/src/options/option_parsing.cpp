@@ -134,9 +134,12 @@ bool parse_int_list_option(std::string_view name, std::string_view text, int lo,
         const std::string_view piece = rest.substr(0, comma);
         int64_t x = 0;
         if (!parse_int_option(name, piece, lo, hi, x, error)) {
+            const bool integer = error.find("out of range") != std::string::npos;
             error = std::string(name) + "=" + std::string(text) + " : " + std::string(piece)
-                + " is not an integer in " + std::to_string(lo) + ".." + std::to_string(hi)
-                + (max_count > 1 ? " (expected e.g. 9,7,5)" : "");
+                + (integer ? " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi)
+                          + ")"
+                           : std::string(" is not an integer")
+                          + (max_count > 1 ? " (expected e.g. 9,7,5)" : ""));
             return false;
         }
         v.push_back(int(x));
