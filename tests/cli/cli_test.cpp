@@ -19,7 +19,6 @@
 
 #include "cli_fixture.h"
 
-
 TEST_F(Cli, SynthesizesAnExrWithMetadata)
 {
     CliRun r = texsyn("stucco.png --pyramid:size=96x64:iterations=1 -o out.exr");

@@ -14,8 +14,8 @@ std::string pixel_hash(const OIIO::ImageBuf& buf)
     std::vector<float> px(size_t(buf.spec().image_pixels()) * size_t(buf.nchannels()));
     EXPECT_TRUE(buf.get_pixels(buf.roi(), OIIO::TypeFloat, px.data()));
     return OIIO::Strutil::fmt::format("{:016x}",
-        OIIO::Strutil::strhash(std::string_view(
-            reinterpret_cast<const char*>(px.data()), px.size() * sizeof(float))));
+        OIIO::Strutil::strhash(
+            std::string_view(reinterpret_cast<const char*>(px.data()), px.size() * sizeof(float))));
 }
 
 constexpr const char* kQuick = "--neighborhood:size=64x48:levels=2:n=7,5:search=exhaustive";
@@ -30,8 +30,8 @@ TEST_F(Cli, NeighborhoodWritesTheImageAndItsSourceMap)
     EXPECT_EQ(out.spec().width, 64);
     EXPECT_EQ(out.spec().height, 48);
     EXPECT_EQ(out.spec().get_string_attribute("synth:method"), "neighborhood");
-    EXPECT_EQ(out.spec().get_string_attribute("synth:options").find("size=64x48:levels=2:n=7,5:"),
-        0u);
+    EXPECT_EQ(
+        out.spec().get_string_attribute("synth:options").find("size=64x48:levels=2:n=7,5:"), 0u);
     OIIO::ImageBuf map = read("coords.exr");
     ASSERT_EQ(map.nchannels(), 2);
     EXPECT_EQ(map.spec().channelnames, (std::vector<std::string> { "x", "y" }));
@@ -85,8 +85,10 @@ TEST_F(Cli, ApplyMapKeepsAnAlignedMapsValues)
 
 TEST_F(Cli, NeighborhoodIsTheSameAtAnyThreadCount)
 {
-    ASSERT_EQ(texsyn(std::string("--threads 1 stucco.png ") + kQuick + " -d float -o a.exr").status, 0);
-    ASSERT_EQ(texsyn(std::string("--threads 2 stucco.png ") + kQuick + " -d float -o b.exr").status, 0);
+    ASSERT_EQ(
+        texsyn(std::string("--threads 1 stucco.png ") + kQuick + " -d float -o a.exr").status, 0);
+    ASSERT_EQ(
+        texsyn(std::string("--threads 2 stucco.png ") + kQuick + " -d float -o b.exr").status, 0);
     EXPECT_EQ(pixel_hash(read("a.exr")), pixel_hash(read("b.exr")));
 }
 

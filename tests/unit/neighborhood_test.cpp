@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Wei & Levoy neighbourhood synthesis: copies, determinism, source maps, errors.
+#include <texsyn/histogram.h>
 #include <texsyn/neighborhood.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include <OpenImageIO/hash.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -42,6 +46,38 @@ std::string pixel_hash(const OIIO::ImageBuf& buf)
     return OIIO::Strutil::fmt::format("{:016x}",
         OIIO::Strutil::strhash(
             std::string_view(reinterpret_cast<const char*>(px.data()), px.size() * sizeof(float))));
+}
+
+// The largest per-channel 1-D Wasserstein distance between the pixel histograms of a and b.
+double worst_w1(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b)
+{
+    const PlanarImage pa = planes_of(a), pb = planes_of(b);
+    double worst = 0;
+    for (size_t c = 0; c < pa.channels.size(); ++c)
+        worst = std::max(
+            worst, wasserstein1(QuantileTable(pa.channels[c]), QuantileTable(pb.channels[c])));
+    return worst;
+}
+
+// Mean absolute difference across the wrap-around seam (last column to first, last row to
+// first) over the mean difference between interior neighbours: ~1 for a seamless tile.
+double seam_ratio(const OIIO::ImageBuf& buf)
+{
+    const PlanarImage p = planes_of(buf);
+    const int w = p.width(), h = p.height();
+    double seam = 0, inner = 0;
+    size_t nseam = 0, ninner = 0;
+    for (const Plane& c : p.channels)
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const double dx = std::abs(c((x + 1) % w, y) - c(x, y));
+                const double dy = std::abs(c(x, (y + 1) % h) - c(x, y));
+                (x == w - 1 ? seam : inner) += dx;
+                (y == h - 1 ? seam : inner) += dy;
+                (x == w - 1 ? nseam : ninner) += 1;
+                (y == h - 1 ? nseam : ninner) += 1;
+            }
+    return (seam / double(nseam)) / (inner / double(ninner));
 }
 
 } // namespace
@@ -113,4 +149,53 @@ TEST(Neighborhood, SourceMapChecksItsInput)
     EXPECT_FALSE(apply_source_map(dst2, bad, sample));
     EXPECT_NE(dst2.geterror().find("pixel (2, 1) holds (40, 3)"), std::string::npos)
         << dst2.geterror();
+}
+
+// The quality bar: per-channel W1 < 0.02 against the sample, and a seamless tile,
+// for stochastic (stucco, marble, rust) and structured or oriented (bricks, grass) samples,
+// with the default method settings.
+TEST(NeighborhoodQuality, HistogramsMatchAndTheOutputTiles)
+{
+    for (const char* name :
+        { "stucco_yellow.png", "marble_pink.png", "rust.png", "grass.png", "bricks.png" }) {
+        const OIIO::ImageBuf sample = crop(name, 128, 128);
+        NeighborhoodOptions opt;
+        opt.width = opt.height = 192;
+        opt.seed = 3;
+        const OIIO::ImageBuf out = neighborhood_synthesize(sample, opt);
+        ASSERT_FALSE(out.has_error()) << out.geterror();
+        EXPECT_LT(worst_w1(out, sample), 0.02) << name;
+        // Interior neighbours differ as much as neighbours across the seam: 1.3 allows for
+        // the variation between images of this size (measured 0.9..1.15 on these samples).
+        EXPECT_LT(seam_ratio(out), 1.3) << name;
+    }
+}
+
+// Wei & Levoy's single pass matches its first rows and columns against noise, which leaves a
+// seam on a structured sample; the seam band pass (tile=1, the default) removes it.
+TEST(NeighborhoodQuality, TheSeamPassMakesAStructuredSampleTile)
+{
+    const OIIO::ImageBuf sample = crop("bricks.png", 128, 128);
+    NeighborhoodOptions opt = options(128, 128, 3, { 7 });
+    opt.tile = 0;
+    const double single_pass = seam_ratio(neighborhood_synthesize(sample, opt));
+    opt.tile = 1;
+    const double repaired = seam_ratio(neighborhood_synthesize(sample, opt));
+    EXPECT_GT(single_pass, 1.5); // measured 1.67 (seed 5: columns 2.1x the interior)
+    EXPECT_LT(repaired, 1.3);
+}
+
+// The report's Figure 3: with the unsynthesized noise in the neighbourhood (shape=square)
+// the result is measurably worse than with the causal L. Measured on 64x64 crops, W1 rises
+// from 0.006 to 0.010 (stucco) and from 0.003 to 0.016 (grass).
+TEST(NeighborhoodQuality, TheCausalShapeBeatsTheSquareWithNoise)
+{
+    for (const char* name : { "stucco_yellow.png", "grass.png" }) {
+        const OIIO::ImageBuf sample = crop(name, 64, 64);
+        NeighborhoodOptions opt = options(96, 96, 1, { 7 });
+        const double causal = worst_w1(neighborhood_synthesize(sample, opt), sample);
+        opt.shape = NeighborhoodShape::Square;
+        const double square = worst_w1(neighborhood_synthesize(sample, opt), sample);
+        EXPECT_GT(square, 1.4 * causal) << name << ": causal " << causal << ", square " << square;
+    }
 }

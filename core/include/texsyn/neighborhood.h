@@ -45,8 +45,12 @@ struct NeighborhoodOptions {
     float eps = 0.0f;   ///< kdtree: approximation factor
     int coherence = 2;  ///< coherent: k of k-coherence
     int merge = 0;      ///< coherent: 1 = also ask the kd-tree
-    uint64_t seed = 0;  ///< set by the tool's --seed, not a `:name=` option
-    int nthreads = 0;   ///< 0 = OIIO's default; never changes the result
+    /// 1: after each level's scanline pass, re-synthesize the pixels within n/2 of the
+    /// wrap-around seams with full square neighbourhoods (which see both sides), so the
+    /// output tiles; 0: Wei & Levoy's single pass (its first rows and columns matched noise).
+    int tile = 1;
+    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
+    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.
     std::function<void(float)> progress;
 

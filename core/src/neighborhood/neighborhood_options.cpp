@@ -45,6 +45,9 @@ const OptionTable<NeighborhoodOptions>& NeighborhoodOptions::table()
             "coherent: k of k-coherence (each shifted neighbour's source and its k-1 most "
             "similar sample positions)");
         t.integer("merge", &O::merge, 0, 1, "coherent: 1 = also take the kd-tree's match");
+        t.integer("tile", &O::tile, 0, 1,
+            "1 = re-synthesize the pixels near the wrap-around seams with square neighbourhoods "
+            "that see both sides, so the output tiles; 0 = Wei & Levoy's single pass");
         t.choice("shape", &O::shape,
             { { "causal", NeighborhoodShape::Causal }, { "square", NeighborhoodShape::Square } },
             "debug: causal (the L of already synthesized pixels) or square (unsynthesized noise "
@@ -85,8 +88,9 @@ bool NeighborhoodOptions::validate(std::string& error) const
         return false;
     }
     if (candidates < 1 || candidates > 64 || dims < 0 || !(eps >= 0.0f && eps <= 100.0f)
-        || coherence < 1 || coherence > 16 || (merge != 0 && merge != 1)) {
-        error = "candidates, dims, eps, coherence or merge is out of range (see --help)";
+        || coherence < 1 || coherence > 16 || (merge != 0 && merge != 1)
+        || (tile != 0 && tile != 1)) {
+        error = "candidates, dims, eps, coherence, merge or tile is out of range (see --help)";
         return false;
     }
     return true;
@@ -102,12 +106,13 @@ int NeighborhoodOptions::n_at(int level) const
 size_t neighborhood_memory_estimate(int sample_width, int sample_height, int nchannels,
     int out_width, int out_height, const NeighborhoodOptions& opt)
 {
-    // The finest level dominates: its sample vectors (count x dim floats) and a searcher
+    // The finest level dominates: its sample vectors (of the square layout when seams are
+    // repaired) (count x dim floats) and a searcher
     // about as large again (TSVQ centroids, kd-tree PCA copies, k-coherence lists), plus
     // the output's pyramid and source maps (~ 4/3 x (channels + 2) values per pixel) and
     // the sample's pyramid.
-    const detail::NeighborhoodLayout layout
-        = detail::make_layout(opt.n_at(0), opt.coarse, opt.levels > 1, opt.shape);
+    const detail::NeighborhoodLayout layout = detail::make_layout(
+        opt.n_at(0), opt.coarse, opt.levels > 1, opt.tile ? NeighborhoodShape::Square : opt.shape);
     const double count = double(sample_width) * double(sample_height);
     const double dim = double(layout.npixels()) * double(nchannels);
     const double vectors = count * dim * 4.0;

@@ -114,6 +114,8 @@ public:
         : m_stamp(ncandidates, 0)
     { }
 
+    bool active() const { return !m_stamp.empty(); }
+
     const std::vector<uint32_t>& collect(const NeighborhoodLayout& layout,
         const CandidateGrid& grid, const OutputLevel& out, int sample_width, int x, int y)
     {
@@ -139,6 +141,13 @@ private:
     std::vector<uint32_t> m_hints;
 };
 
+// Whether the seam band is re-synthesized (opt.tile; the debug square shape has no seams
+// to repair: it already sees both sides).
+bool repairs_seams(const NeighborhoodOptions& opt)
+{
+    return opt.tile != 0 && opt.shape == NeighborhoodShape::Causal;
+}
+
 SearchSettings search_settings(const NeighborhoodOptions& opt)
 {
     SearchSettings s;
@@ -152,48 +161,113 @@ SearchSettings search_settings(const NeighborhoodOptions& opt)
     return s;
 }
 
+// The search of one level for one neighbourhood shape: the sample's vectors and a searcher
+// over them, and the step that picks and copies one output pixel.
+class LevelSearch {
+public:
+    LevelSearch(const NeighborhoodLayout& layout, const std::vector<Plane>& sample,
+        const std::vector<Plane>& sample_coarser, const NeighborhoodOptions& opt,
+        std::string& error)
+        : m_layout(layout)
+        , m_sample(sample)
+        , m_grid(detail::candidate_grid(layout, sample[0].width(), sample[0].height()))
+        , m_vectors(detail::sample_vectors(layout, m_grid, sample, sample_coarser, opt.nthreads))
+        , m_hints(opt.search == SearchMethod::Coherent ? m_grid.count() : 0)
+        , m_query(size_t(layout.npixels()) * sample.size())
+    {
+        VectorSet set;
+        set.data = m_vectors.data();
+        set.count = m_grid.count();
+        set.dim = int(m_query.size());
+        m_search = make_search(set, search_settings(opt), error);
+    }
+
+    bool ok() const { return bool(m_search); }
+
+    // Output pixel (x, y) of `out` becomes the sample pixel whose neighbourhood best
+    // matches its own (`coarser`: the synthesized next level, empty at the coarsest).
+    void synthesize_pixel(OutputLevel& out, const std::vector<Plane>& coarser, int x, int y)
+    {
+        const int sw = m_sample[0].width(), w = out.channels[0].width();
+        detail::output_vector(m_layout, out.channels, coarser, x, y, m_query.data());
+        const std::vector<uint32_t>* hints
+            = m_hints.active() ? &m_hints.collect(m_layout, m_grid, out, sw, x, y) : nullptr;
+        const uint32_t best = m_search->nearest(
+            m_query.data(), hints ? hints->data() : nullptr, hints ? hints->size() : 0);
+        const size_t from = size_t(m_grid.y(best)) * size_t(sw) + size_t(m_grid.x(best));
+        const size_t to = size_t(y) * size_t(w) + size_t(x);
+        for (size_t c = 0; c < m_sample.size(); ++c)
+            out.channels[c].data()[to] = m_sample[c].data()[from];
+        out.source[to] = uint32_t(from);
+    }
+
+private:
+    NeighborhoodLayout m_layout;
+    const std::vector<Plane>& m_sample;
+    CandidateGrid m_grid;
+    std::vector<float> m_vectors;
+    HintCollector m_hints;
+    std::vector<float> m_query;
+    std::unique_ptr<NeighborSearch> m_search;
+};
+
+// The pixels of the seam band of a w x h level: the `band` rows on each side of the
+// wrap-around between the last row and the first (from row h - band down across the wrap),
+// then the `band` columns on each side of the left/right wrap in the remaining rows.
+std::vector<std::pair<int, int>> seam_band(int w, int h, int band)
+{
+    std::vector<std::pair<int, int>> pixels;
+    std::vector<char> in_row_band(size_t(h), 0);
+    for (int i = 0; i < std::min(2 * band, h); ++i) {
+        const int y = ((h - band + i) % h + h) % h;
+        in_row_band[size_t(y)] = 1;
+        for (int x = 0; x < w; ++x)
+            pixels.emplace_back(x, y);
+    }
+    for (int y = 0; y < h; ++y)
+        if (!in_row_band[size_t(y)])
+            for (int i = 0; i < std::min(2 * band, w); ++i)
+                pixels.emplace_back(((w - band + i) % w + w) % w, y);
+    return pixels;
+}
+
 // Synthesizes output level `l` in scanline order; `coarser` is the synthesized level l+1
-// (empty at the coarsest). `done`/`total` count pixels over all levels for progress.
+// (empty at the coarsest). With opt.tile, then re-synthesizes the seam band with full
+// square neighbourhoods, which now see both sides of each seam. `done`/`total` count
+// pixels over all levels for progress.
 bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
     const std::vector<Plane>& sample_coarser, const std::vector<Plane>& coarser,
     const NeighborhoodOptions& opt, int l, size_t& done, size_t total, std::string& error)
 {
-    const NeighborhoodLayout layout
-        = detail::make_layout(opt.n_at(l), opt.coarse, !coarser.empty(), opt.shape);
-    const int sw = sample[0].width();
-    const CandidateGrid grid = detail::candidate_grid(layout, sw, sample[0].height());
-    const std::vector<float> vectors
-        = detail::sample_vectors(layout, grid, sample, sample_coarser, opt.nthreads);
-    VectorSet set;
-    set.data = vectors.data();
-    set.count = grid.count();
-    set.dim = layout.npixels() * int(sample.size());
-    std::unique_ptr<NeighborSearch> search = make_search(set, search_settings(opt), error);
-    if (!search)
-        return false;
-
-    const bool coherent = opt.search == SearchMethod::Coherent;
-    HintCollector hints(coherent ? grid.count() : 0);
-    std::vector<float> query(size_t(set.dim));
     const int w = out.channels[0].width(), h = out.channels[0].height();
-    const size_t nc = sample.size();
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            detail::output_vector(layout, out.channels, coarser, x, y, query.data());
-            const std::vector<uint32_t>* hint_list
-                = coherent ? &hints.collect(layout, grid, out, sw, x, y) : nullptr;
-            const uint32_t best = search->nearest(query.data(),
-                hint_list ? hint_list->data() : nullptr, hint_list ? hint_list->size() : 0);
-            const size_t from = size_t(grid.y(best)) * size_t(sw) + size_t(grid.x(best));
-            const size_t to = size_t(y) * size_t(w) + size_t(x);
-            for (size_t c = 0; c < nc; ++c)
-                out.channels[c].data()[to] = sample[c].data()[from];
-            out.source[to] = uint32_t(from);
-        }
-        done += size_t(w);
+    auto report = [&](size_t pixels) {
+        done += pixels;
         if (opt.progress)
             opt.progress(float(double(done) / double(total)));
+    };
+    {
+        LevelSearch search(
+            detail::make_layout(opt.n_at(l), opt.coarse, !coarser.empty(), opt.shape), sample,
+            sample_coarser, opt, error);
+        if (!search.ok())
+            return false;
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x)
+                search.synthesize_pixel(out, coarser, x, y);
+            report(size_t(w));
+        }
     }
+    if (!repairs_seams(opt))
+        return true;
+    LevelSearch search(
+        detail::make_layout(opt.n_at(l), opt.coarse, !coarser.empty(), NeighborhoodShape::Square),
+        sample, sample_coarser, opt, error);
+    if (!search.ok())
+        return false;
+    const auto band = seam_band(w, h, (opt.n_at(l) - 1) / 2);
+    for (auto [x, y] : band)
+        search.synthesize_pixel(out, coarser, x, y);
+    report(band.size());
     return true;
 }
 
@@ -242,8 +316,12 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Neighbo
     const auto sample_levels
         = gaussian_levels(in.channels, opt.levels, Boundary::Reflect, opt.nthreads);
     size_t total = 0, done = 0;
-    for (int l = 0; l < opt.levels; ++l)
-        total += size_t(halved(w, l)) * size_t(halved(h, l));
+    for (int l = 0; l < opt.levels; ++l) {
+        const int lw = halved(w, l), lh = halved(h, l);
+        total += size_t(lw) * size_t(lh);
+        if (repairs_seams(opt))
+            total += seam_band(lw, lh, (opt.n_at(l) - 1) / 2).size();
+    }
     OutputLevel coarser, out;
     static const std::vector<Plane> none;
     for (int l = opt.levels - 1; l >= 0; --l) {

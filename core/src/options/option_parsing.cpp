@@ -137,9 +137,9 @@ bool parse_int_list_option(std::string_view name, std::string_view text, int lo,
             const bool integer = error.find("out of range") != std::string::npos;
             error = std::string(name) + "=" + std::string(text) + " : " + std::string(piece)
                 + (integer ? " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi)
-                          + ")"
+                            + ")"
                            : std::string(" is not an integer")
-                          + (max_count > 1 ? " (expected e.g. 9,7,5)" : ""));
+                            + (max_count > 1 ? " (expected e.g. 9,7,5)" : ""));
             return false;
         }
         v.push_back(int(x));
