@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Prints docs/options-<method>.md from the method's option table.
-// usage: texsyn_docgen pyramid|solid|mix
+// usage: texsyn_docgen pyramid|solid|mix|neighborhood
 #include <cstdio>
 #include <string>
 
+#include <texsyn/neighborhood.h>
 #include <texsyn/synthesis.h>
 
 namespace {
@@ -44,8 +45,13 @@ int main(int argc, char* argv[])
             "Texture mixtures ([mixtures.md](mixtures.md)). Give exactly one mode: "
             "`palette=I:pattern=J`, `split=S` (with an optional `palette=`) or "
             "`weights=W0,W1,...`; the other options are those of `--pyramid`.\n\n");
+    } else if (method == "neighborhood") {
+        print_table<texsyn::NeighborhoodOptions>("neighborhood", "NeighborhoodOptions::table()",
+            "Wei & Levoy neighbourhood synthesis ([neighborhood.md](neighborhood.md)). The tool "
+            "also takes `map=FILE.exr`, the source map to write (not an option of the method: "
+            "it names a file).\n\n");
     } else {
-        std::fprintf(stderr, "usage: texsyn_docgen pyramid|solid|mix\n");
+        std::fprintf(stderr, "usage: texsyn_docgen pyramid|solid|mix|neighborhood\n");
         return 1;
     }
     return 0;

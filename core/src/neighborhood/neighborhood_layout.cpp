@@ -2,6 +2,9 @@
 // Neighbourhood shapes, candidate positions and vector gathering (neighborhood_pvt.h).
 #include "neighborhood_pvt.h"
 
+#include <algorithm>
+#include <cstdlib>
+
 #include <OpenImageIO/parallel.h>
 
 namespace texsyn::detail {
@@ -80,24 +83,58 @@ std::vector<float> sample_vectors(const NeighborhoodLayout& layout, const Candid
     return vectors;
 }
 
-void output_vector(const NeighborhoodLayout& layout, const std::vector<Plane>& level,
-    const std::vector<Plane>& coarser, int x, int y, float* out)
+OutputGather::OutputGather(const NeighborhoodLayout& layout, const std::vector<Plane>& level,
+    const std::vector<Plane>& coarser)
+    : m_layout(layout)
+    , m_level(level)
+    , m_coarser(coarser)
 {
-    const size_t nc = level.size();
-    const int w = level[0].width(), h = level[0].height();
+    const std::ptrdiff_t w = level[0].width();
     for (const Offset& o : layout.fine) {
-        const size_t i = size_t(wrap(y + o.dy, h)) * size_t(w) + size_t(wrap(x + o.dx, w));
-        for (size_t c = 0; c < nc; ++c)
-            *out++ = level[c].data()[i];
+        m_fine_offsets.push_back(o.dy * w + o.dx);
+        m_reach = std::max({ m_reach, std::abs(o.dx), std::abs(o.dy) });
     }
     if (layout.coarse.empty())
         return;
-    const int cw = coarser[0].width(), ch = coarser[0].height();
+    const std::ptrdiff_t cw = coarser[0].width();
     for (const Offset& o : layout.coarse) {
-        const size_t i
-            = size_t(wrap(y / 2 + o.dy, ch)) * size_t(cw) + size_t(wrap(x / 2 + o.dx, cw));
-        for (size_t c = 0; c < nc; ++c)
-            *out++ = coarser[c].data()[i];
+        m_coarse_offsets.push_back(o.dy * cw + o.dx);
+        m_coarse_reach = std::max({ m_coarse_reach, std::abs(o.dx), std::abs(o.dy) });
+    }
+}
+
+void OutputGather::gather(int x, int y, float* out) const
+{
+    const size_t nc = m_level.size();
+    const int w = m_level[0].width(), h = m_level[0].height();
+    if (x >= m_reach && y >= m_reach && x + m_reach < w && y + m_reach < h) {
+        const std::ptrdiff_t base = std::ptrdiff_t(y) * w + x;
+        for (std::ptrdiff_t off : m_fine_offsets)
+            for (size_t c = 0; c < nc; ++c)
+                *out++ = m_level[c].data()[base + off];
+    } else {
+        for (const Offset& o : m_layout.fine) {
+            const size_t i = size_t(wrap(y + o.dy, h)) * size_t(w) + size_t(wrap(x + o.dx, w));
+            for (size_t c = 0; c < nc; ++c)
+                *out++ = m_level[c].data()[i];
+        }
+    }
+    if (m_layout.coarse.empty())
+        return;
+    const int cw = m_coarser[0].width(), ch = m_coarser[0].height();
+    const int px = x / 2, py = y / 2;
+    if (px >= m_coarse_reach && py >= m_coarse_reach && px + m_coarse_reach < cw
+        && py + m_coarse_reach < ch) {
+        const std::ptrdiff_t base = std::ptrdiff_t(py) * cw + px;
+        for (std::ptrdiff_t off : m_coarse_offsets)
+            for (size_t c = 0; c < nc; ++c)
+                *out++ = m_coarser[c].data()[base + off];
+    } else {
+        for (const Offset& o : m_layout.coarse) {
+            const size_t i = size_t(wrap(py + o.dy, ch)) * size_t(cw) + size_t(wrap(px + o.dx, cw));
+            for (size_t c = 0; c < nc; ++c)
+                *out++ = m_coarser[c].data()[i];
+        }
     }
 }
 

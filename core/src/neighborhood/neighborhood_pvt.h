@@ -57,9 +57,22 @@ CandidateGrid candidate_grid(const NeighborhoodLayout& layout, int width, int he
 std::vector<float> sample_vectors(const NeighborhoodLayout& layout, const CandidateGrid& grid,
     const std::vector<Plane>& level, const std::vector<Plane>& coarser, int nthreads);
 
-/// The neighbourhood vector of output pixel (x, y): `level` and `coarser` addressed
-/// circularly (the output is a torus). `out` holds layout.npixels() * channels floats.
-void output_vector(const NeighborhoodLayout& layout, const std::vector<Plane>& level,
-    const std::vector<Plane>& coarser, int x, int y, float* out);
+/// Gathers the neighbourhood vectors of output pixels: `level` and `coarser` (empty at the
+/// coarsest level) addressed circularly, since the output is a torus. Interior pixels take
+/// precomputed linear offsets; only pixels near an edge pay for wrapping.
+class OutputGather {
+public:
+    OutputGather(const NeighborhoodLayout& layout, const std::vector<Plane>& level,
+        const std::vector<Plane>& coarser);
+    /// The vector of pixel (x, y) into `out` (layout.npixels() * channels floats).
+    void gather(int x, int y, float* out) const;
+
+private:
+    const NeighborhoodLayout& m_layout;
+    const std::vector<Plane>& m_level;
+    const std::vector<Plane>& m_coarser;
+    std::vector<std::ptrdiff_t> m_fine_offsets, m_coarse_offsets;
+    int m_reach = 0, m_coarse_reach = 0; // largest |dx|, |dy| of each part
+};
 
 } // namespace texsyn::detail

@@ -183,13 +183,14 @@ public:
     }
 
     bool ok() const { return bool(m_search); }
+    const NeighborhoodLayout& layout() const { return m_layout; }
 
     // Output pixel (x, y) of `out` becomes the sample pixel whose neighbourhood best
-    // matches its own (`coarser`: the synthesized next level, empty at the coarsest).
-    void synthesize_pixel(OutputLevel& out, const std::vector<Plane>& coarser, int x, int y)
+    // matches its own, gathered by `gather` (made for `out` and its coarser level).
+    void synthesize_pixel(OutputLevel& out, const detail::OutputGather& gather, int x, int y)
     {
         const int sw = m_sample[0].width(), w = out.channels[0].width();
-        detail::output_vector(m_layout, out.channels, coarser, x, y, m_query.data());
+        gather.gather(x, y, m_query.data());
         const std::vector<uint32_t>* hints
             = m_hints.active() ? &m_hints.collect(m_layout, m_grid, out, sw, x, y) : nullptr;
         const uint32_t best = m_search->nearest(
@@ -251,9 +252,10 @@ bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
             sample_coarser, opt, error);
         if (!search.ok())
             return false;
+        const detail::OutputGather gather(search.layout(), out.channels, coarser);
         for (int y = 0; y < h; ++y) {
             for (int x = 0; x < w; ++x)
-                search.synthesize_pixel(out, coarser, x, y);
+                search.synthesize_pixel(out, gather, x, y);
             report(size_t(w));
         }
     }
@@ -264,9 +266,10 @@ bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
         sample, sample_coarser, opt, error);
     if (!search.ok())
         return false;
+    const detail::OutputGather gather(search.layout(), out.channels, coarser);
     const auto band = seam_band(w, h, (opt.n_at(l) - 1) / 2);
     for (auto [x, y] : band)
-        search.synthesize_pixel(out, coarser, x, y);
+        search.synthesize_pixel(out, gather, x, y);
     report(band.size());
     return true;
 }
