@@ -199,3 +199,52 @@ TEST(NeighborhoodQuality, TheCausalShapeBeatsTheSquareWithNoise)
         EXPECT_GT(square, 1.4 * causal) << name << ": causal " << causal << ", square " << square;
     }
 }
+
+// Alpha and extra channels are copied with the colour, from the same sample pixel.
+TEST(Neighborhood, AlphaIsCopiedWithTheColour)
+{
+    Plane alpha;
+    const OIIO::ImageBuf sample = OIIO::ImageBufAlgo::cut(
+        test::stucco_with_alpha(alpha), OIIO::ROI(0, 48, 0, 48, 0, 1, 0, 4));
+    OIIO::ImageBuf map;
+    const OIIO::ImageBuf out = neighborhood_synthesize(sample, options(56, 56, 2, { 7, 5 }), &map);
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    ASSERT_EQ(out.nchannels(), 4);
+    EXPECT_EQ(out.spec().alpha_channel, 3);
+    const PlanarImage o = planes_of(out), s = planes_of(sample);
+    for (int y = 0; y < 56; ++y)
+        for (int x = 0; x < 56; ++x) {
+            float xy[2];
+            map.getpixel(x, y, xy, 2);
+            const int sx = int(xy[0]), sy = int(xy[1]);
+            ASSERT_EQ(o.channels[3](x, y), s.channels[3](sx, sy));
+            for (int c = 0; c < 3; ++c) // un-associated again after re-association
+                ASSERT_NEAR(o.channels[size_t(c)](x, y), s.channels[size_t(c)](sx, sy), 1e-6f);
+        }
+}
+
+// Every channel is part of the neighbourhood: a sample whose colour is flat and whose only
+// structure is in alpha (vertical stripes, period 8) gives striped alpha, not noise.
+TEST(Neighborhood, AlphaIsPartOfTheNeighbourhood)
+{
+    PlanarImage s;
+    for (int c = 0; c < 4; ++c)
+        s.channels.emplace_back(48, 48, 0.5f);
+    s.channel_names = { "R", "G", "B", "A" };
+    s.alpha_channel = 3;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 48; ++x)
+            s.channels[3](x, y) = (x / 4) % 2 ? 1.0f : 0.25f;
+    OIIO::ImageBuf sample;
+    imagebuf_from_planes(s, sample);
+    const PlanarImage o = planes_of(neighborhood_synthesize(sample, options(64, 64, 1, { 9 })));
+    size_t same_below = 0, changes_across = 0;
+    for (int y = 0; y < 63; ++y)
+        for (int x = 0; x < 63; ++x) {
+            same_below += o.channels[3](x, y) == o.channels[3](x, y + 1);
+            changes_across += o.channels[3](x, y) != o.channels[3](x + 1, y);
+        }
+    EXPECT_GT(double(same_below) / (63.0 * 63.0), 0.9);
+    // The sample's stripes change every 4 pixels: a quarter of horizontal neighbours differ.
+    EXPECT_NEAR(double(changes_across) / (63.0 * 63.0), 0.25, 0.05);
+}
