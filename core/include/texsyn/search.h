@@ -7,8 +7,9 @@
 //  - Distances are squared Euclidean (L2) over all `dim` components, summed in a fixed
 //    order (squared_distance), so every back-end ranks vectors identically.
 //  - Ties go to the lowest vector index: results never depend on thread count or timing.
-//  - A searcher is built once per vector set; nearest() is const and may be called from
-//    one thread at a time (it may use OIIO's thread pool inside).
+//  - A searcher is built once per vector set; nearest() is const and safe to call from
+//    several threads at once (the synthesis runs rows as a wavefront); it may use OIIO's
+//    thread pool inside.
 //  - The vector set must outlive the searcher (it is not copied).
 #pragma once
 

@@ -83,15 +83,17 @@ std::vector<float> sample_vectors(const NeighborhoodLayout& layout, const Candid
     return vectors;
 }
 
-OutputGather::OutputGather(const NeighborhoodLayout& layout, const std::vector<Plane>& level,
-    const std::vector<Plane>& coarser)
+NeighborAccess::NeighborAccess(const NeighborhoodLayout& layout, const OutputLevel& level,
+    const std::vector<Plane>& coarser, NeighborView view)
     : m_layout(layout)
     , m_level(level)
     , m_coarser(coarser)
+    , m_view(view)
 {
-    const std::ptrdiff_t w = level[0].width();
+    const std::ptrdiff_t w = level.width();
     for (const Offset& o : layout.fine) {
         m_fine_offsets.push_back(o.dy * w + o.dx);
+        m_after.push_back(view == NeighborView::Scanline && (o.dy > 0 || (o.dy == 0 && o.dx > 0)));
         m_reach = std::max({ m_reach, std::abs(o.dx), std::abs(o.dy) });
     }
     if (layout.coarse.empty())
@@ -103,20 +105,39 @@ OutputGather::OutputGather(const NeighborhoodLayout& layout, const std::vector<P
     }
 }
 
-void OutputGather::gather(int x, int y, float* out) const
+const OutputLevel::Pixels& NeighborAccess::locate(int x, int y, size_t i, size_t& index) const
 {
-    const size_t nc = m_level.size();
-    const int w = m_level[0].width(), h = m_level[0].height();
+    const int w = m_level.width(), h = m_level.height();
+    const Offset& o = m_layout.fine[i];
+    const int nx = x + o.dx, ny = y + o.dy;
+    index = size_t(wrap(ny, h)) * size_t(w) + size_t(wrap(nx, w));
+    const bool initial = m_after[i] || (m_view == NeighborView::Scanline && (nx < 0 || ny < 0));
+    return initial ? m_level.initial : m_level.live;
+}
+
+uint32_t NeighborAccess::neighbor_source(int x, int y, size_t i) const
+{
+    size_t index = 0;
+    return locate(x, y, i, index).source[index];
+}
+
+void NeighborAccess::gather(int x, int y, float* out) const
+{
+    const size_t nc = m_level.live.channels.size();
+    const int w = m_level.width(), h = m_level.height();
     if (x >= m_reach && y >= m_reach && x + m_reach < w && y + m_reach < h) {
         const std::ptrdiff_t base = std::ptrdiff_t(y) * w + x;
-        for (std::ptrdiff_t off : m_fine_offsets)
+        for (size_t i = 0; i < m_fine_offsets.size(); ++i) {
+            const auto& pixels = m_after[i] ? m_level.initial : m_level.live;
             for (size_t c = 0; c < nc; ++c)
-                *out++ = m_level[c].data()[base + off];
+                *out++ = pixels.channels[c].data()[base + m_fine_offsets[i]];
+        }
     } else {
-        for (const Offset& o : m_layout.fine) {
-            const size_t i = size_t(wrap(y + o.dy, h)) * size_t(w) + size_t(wrap(x + o.dx, w));
+        for (size_t i = 0; i < m_fine_offsets.size(); ++i) {
+            size_t index = 0;
+            const auto& pixels = locate(x, y, i, index);
             for (size_t c = 0; c < nc; ++c)
-                *out++ = m_level[c].data()[i];
+                *out++ = pixels.channels[c].data()[index];
         }
     }
     if (m_layout.coarse.empty())

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <texsyn/image.h>
@@ -57,22 +58,74 @@ CandidateGrid candidate_grid(const NeighborhoodLayout& layout, int width, int he
 std::vector<float> sample_vectors(const NeighborhoodLayout& layout, const CandidateGrid& grid,
     const std::vector<Plane>& level, const std::vector<Plane>& coarser, int nthreads);
 
-/// Gathers the neighbourhood vectors of output pixels: `level` and `coarser` (empty at the
-/// coarsest level) addressed circularly, since the output is a torus. Interior pixels take
-/// precomputed linear offsets; only pixels near an edge pay for wrapping.
-class OutputGather {
+/// One output level being synthesized: its channels and, per pixel, the index of the sample
+/// pixel (at the same level) it holds — `live` as synthesis proceeds, `initial` the noise it
+/// started from.
+struct OutputLevel {
+    struct Pixels {
+        std::vector<Plane> channels;
+        std::vector<uint32_t> source;
+    };
+    Pixels live, initial;
+    int width() const { return live.channels[0].width(); }
+    int height() const { return live.channels[0].height(); }
+};
+
+/// Which values an output neighbourhood sees.
+enum class NeighborView {
+    /// The scanline pass: a neighbour that comes after the pixel in scanline order, or lies
+    /// across the top or left edge, is read from the initial noise. Pixels then depend only
+    /// on pixels above and to the left without wrapping, so rows can be synthesized as a
+    /// wavefront (each row a few pixels behind the one above) with the result of one thread.
+    Scanline,
+    /// Every neighbour as it is now (the seam pass, when the level is complete).
+    Current,
+};
+
+/// Reads the neighbourhoods of output pixels: the level (circularly, since the output is a
+/// torus, and per `view`) and the coarser level (complete; empty at the coarsest).
+/// Interior pixels take precomputed linear offsets; only pixels near an edge pay for
+/// wrapping. Safe to use from several threads at once.
+class NeighborAccess {
 public:
-    OutputGather(const NeighborhoodLayout& layout, const std::vector<Plane>& level,
-        const std::vector<Plane>& coarser);
+    NeighborAccess(const NeighborhoodLayout& layout, const OutputLevel& level,
+        const std::vector<Plane>& coarser, NeighborView view);
     /// The vector of pixel (x, y) into `out` (layout.npixels() * channels floats).
     void gather(int x, int y, float* out) const;
+    /// The source (sample pixel index) of the neighbour at layout.fine[i] of (x, y).
+    uint32_t neighbor_source(int x, int y, size_t i) const;
+    /// How far right of a pixel, in the rows above it, its neighbourhood reaches.
+    int reach() const { return m_reach; }
 
 private:
+    // Where neighbour i of (x, y) is read: the pixels (live or initial) and an index.
+    const OutputLevel::Pixels& locate(int x, int y, size_t i, size_t& index) const;
+
     const NeighborhoodLayout& m_layout;
-    const std::vector<Plane>& m_level;
+    const OutputLevel& m_level;
     const std::vector<Plane>& m_coarser;
+    NeighborView m_view;
     std::vector<std::ptrdiff_t> m_fine_offsets, m_coarse_offsets;
+    std::vector<char> m_after;           // fine neighbour i comes after the pixel in scanline order
     int m_reach = 0, m_coarse_reach = 0; // largest |dx|, |dy| of each part
 };
+
+} // namespace texsyn::detail
+
+namespace texsyn::detail {
+
+/// The number of threads `nthreads` means (OIIO's convention: 0 = the "threads" attribute,
+/// which defaults to the number of cores).
+int resolve_threads(int nthreads);
+
+/// Calls pixel(worker, x, y) once for every pixel of a width x height level such that each
+/// call happens after the calls for every pixel above it up to `reach` columns to its right
+/// (and to the right end of the row above when that is nearer), and after the pixels to its
+/// left in its row: the dependencies of a NeighborView::Scanline neighbourhood. Rows run on
+/// up to `nthreads` workers (worker 0 is the calling thread) as a wavefront; the result is
+/// the sequential one whatever nthreads is. `row_done()` is called on the calling thread as
+/// rows complete (for progress). An exception in a worker stops the pass and is rethrown.
+void scanline_pass(int width, int height, int reach, int nthreads,
+    const std::function<void(int, int, int)>& pixel, const std::function<void()>& row_done);
 
 } // namespace texsyn::detail

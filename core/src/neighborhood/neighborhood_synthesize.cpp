@@ -80,51 +80,47 @@ bool check_sizes(int sw, int sh, int w, int h, const NeighborhoodOptions& opt, s
     return true;
 }
 
-// One output level being synthesized: its channels and, per pixel, the index of the sample
-// pixel (at the same level) it holds.
-struct OutputLevel {
-    std::vector<Plane> channels;
-    std::vector<uint32_t> source;
-};
+using detail::NeighborAccess;
+using detail::NeighborView;
+using detail::OutputLevel;
 
 // Noise drawn from the sample: each pixel a seeded random pixel of the sample level.
 OutputLevel initial_level(const std::vector<Plane>& sample, int w, int h, uint64_t seed, int level)
 {
     OutputLevel out;
+    OutputLevel::Pixels& noise = out.initial;
     const uint64_t npixels = uint64_t(sample[0].width()) * uint64_t(sample[0].height());
-    out.source.resize(size_t(w) * size_t(h));
-    for (size_t i = 0; i < out.source.size(); ++i) {
+    noise.source.resize(size_t(w) * size_t(h));
+    for (size_t i = 0; i < noise.source.size(); ++i) {
         const uint64_t r = random_bits(seed, 0x4e42 + uint64_t(level), i) >> 32;
-        out.source[i] = uint32_t((r * npixels) >> 32);
+        noise.source[i] = uint32_t((r * npixels) >> 32);
     }
     for (const Plane& s : sample) {
         Plane p(w, h);
-        for (size_t i = 0; i < out.source.size(); ++i)
-            p.data()[i] = s.data()[out.source[i]];
-        out.channels.push_back(std::move(p));
+        for (size_t i = 0; i < noise.source.size(); ++i)
+            p.data()[i] = s.data()[noise.source[i]];
+        noise.channels.push_back(std::move(p));
     }
+    out.live = noise;
     return out;
 }
 
 // The coherence hints for output pixel (x, y): for each neighbour at offset o, the sample
-// candidate its source would continue to (source - o), each once.
+// candidate its source would continue to (source - o), each once. One per worker.
 class HintCollector {
 public:
     explicit HintCollector(size_t ncandidates)
         : m_stamp(ncandidates, 0)
     { }
 
-    bool active() const { return !m_stamp.empty(); }
-
     const std::vector<uint32_t>& collect(const NeighborhoodLayout& layout,
-        const CandidateGrid& grid, const OutputLevel& out, int sample_width, int x, int y)
+        const CandidateGrid& grid, const NeighborAccess& access, int sample_width, int x, int y)
     {
         ++m_pixel;
         m_hints.clear();
-        const int w = out.channels[0].width(), h = out.channels[0].height();
-        for (const detail::Offset& o : layout.fine) {
-            const int qx = (x + o.dx + w) % w, qy = (y + o.dy + h) % h;
-            const uint32_t s = out.source[size_t(qy) * size_t(w) + size_t(qx)];
+        for (size_t i = 0; i < layout.fine.size(); ++i) {
+            const detail::Offset& o = layout.fine[i];
+            const uint32_t s = access.neighbor_source(x, y, i);
             const int64_t c = grid.index(
                 int(s % uint32_t(sample_width)) - o.dx, int(s / uint32_t(sample_width)) - o.dy);
             if (c >= 0 && m_stamp[size_t(c)] != m_pixel) {
@@ -161,10 +157,17 @@ SearchSettings search_settings(const NeighborhoodOptions& opt)
     return s;
 }
 
-// The search of one level for one neighbourhood shape: the sample's vectors and a searcher
-// over them, and the step that picks and copies one output pixel.
+// The search of one level for one neighbourhood shape: the sample's vectors, a searcher
+// over them, and the step that picks and copies one output pixel, which several workers may
+// take at once (each with its own Worker).
 class LevelSearch {
 public:
+    // What one worker needs for itself: its query vector and coherence hints.
+    struct Worker {
+        std::vector<float> query;
+        std::unique_ptr<HintCollector> hints;
+    };
+
     LevelSearch(const NeighborhoodLayout& layout, const std::vector<Plane>& sample,
         const std::vector<Plane>& sample_coarser, const NeighborhoodOptions& opt,
         std::string& error)
@@ -172,34 +175,43 @@ public:
         , m_sample(sample)
         , m_grid(detail::candidate_grid(layout, sample[0].width(), sample[0].height()))
         , m_vectors(detail::sample_vectors(layout, m_grid, sample, sample_coarser, opt.nthreads))
-        , m_hints(opt.search == SearchMethod::Coherent ? m_grid.count() : 0)
-        , m_query(size_t(layout.npixels()) * sample.size())
+        , m_coherent(opt.search == SearchMethod::Coherent)
     {
         VectorSet set;
         set.data = m_vectors.data();
         set.count = m_grid.count();
-        set.dim = int(m_query.size());
+        set.dim = layout.npixels() * int(sample.size());
         m_search = make_search(set, search_settings(opt), error);
     }
 
     bool ok() const { return bool(m_search); }
     const NeighborhoodLayout& layout() const { return m_layout; }
 
-    // Output pixel (x, y) of `out` becomes the sample pixel whose neighbourhood best
-    // matches its own, gathered by `gather` (made for `out` and its coarser level).
-    void synthesize_pixel(OutputLevel& out, const detail::OutputGather& gather, int x, int y)
+    Worker make_worker() const
     {
-        const int sw = m_sample[0].width(), w = out.channels[0].width();
-        gather.gather(x, y, m_query.data());
+        Worker w;
+        w.query.resize(size_t(m_layout.npixels()) * m_sample.size());
+        if (m_coherent)
+            w.hints = std::make_unique<HintCollector>(m_grid.count());
+        return w;
+    }
+
+    // Output pixel (x, y) of `out` becomes the sample pixel whose neighbourhood best matches
+    // its own, read through `access`.
+    void synthesize_pixel(
+        OutputLevel& out, const NeighborAccess& access, Worker& worker, int x, int y) const
+    {
+        const int sw = m_sample[0].width(), w = out.width();
+        access.gather(x, y, worker.query.data());
         const std::vector<uint32_t>* hints
-            = m_hints.active() ? &m_hints.collect(m_layout, m_grid, out, sw, x, y) : nullptr;
+            = worker.hints ? &worker.hints->collect(m_layout, m_grid, access, sw, x, y) : nullptr;
         const uint32_t best = m_search->nearest(
-            m_query.data(), hints ? hints->data() : nullptr, hints ? hints->size() : 0);
+            worker.query.data(), hints ? hints->data() : nullptr, hints ? hints->size() : 0);
         const size_t from = size_t(m_grid.y(best)) * size_t(sw) + size_t(m_grid.x(best));
         const size_t to = size_t(y) * size_t(w) + size_t(x);
         for (size_t c = 0; c < m_sample.size(); ++c)
-            out.channels[c].data()[to] = m_sample[c].data()[from];
-        out.source[to] = uint32_t(from);
+            out.live.channels[c].data()[to] = m_sample[c].data()[from];
+        out.live.source[to] = uint32_t(from);
     }
 
 private:
@@ -207,8 +219,7 @@ private:
     const std::vector<Plane>& m_sample;
     CandidateGrid m_grid;
     std::vector<float> m_vectors;
-    HintCollector m_hints;
-    std::vector<float> m_query;
+    bool m_coherent;
     std::unique_ptr<NeighborSearch> m_search;
 };
 
@@ -240,36 +251,44 @@ bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
     const std::vector<Plane>& sample_coarser, const std::vector<Plane>& coarser,
     const NeighborhoodOptions& opt, int l, size_t& done, size_t total, std::string& error)
 {
-    const int w = out.channels[0].width(), h = out.channels[0].height();
+    const int w = out.width(), h = out.height();
     auto report = [&](size_t pixels) {
         done += pixels;
         if (opt.progress)
             opt.progress(float(double(done) / double(total)));
     };
     {
-        LevelSearch search(
+        const LevelSearch search(
             detail::make_layout(opt.n_at(l), opt.coarse, !coarser.empty(), opt.shape), sample,
             sample_coarser, opt, error);
         if (!search.ok())
             return false;
-        const detail::OutputGather gather(search.layout(), out.channels, coarser);
-        for (int y = 0; y < h; ++y) {
-            for (int x = 0; x < w; ++x)
-                search.synthesize_pixel(out, gather, x, y);
-            report(size_t(w));
-        }
+        const NeighborAccess access(search.layout(), out, coarser, NeighborView::Scanline);
+        // The exhaustive search parallelises over the candidates of one pixel instead.
+        const int workers
+            = opt.search == SearchMethod::Exhaustive ? 1 : detail::resolve_threads(opt.nthreads);
+        std::vector<LevelSearch::Worker> scratch;
+        for (int t = 0; t < workers; ++t)
+            scratch.push_back(search.make_worker());
+        detail::scanline_pass(
+            w, h, access.reach(), int(scratch.size()),
+            [&](int worker, int x, int y) {
+                search.synthesize_pixel(out, access, scratch[size_t(worker)], x, y);
+            },
+            [&] { report(size_t(w)); });
     }
     if (!repairs_seams(opt))
         return true;
-    LevelSearch search(
+    const LevelSearch search(
         detail::make_layout(opt.n_at(l), opt.coarse, !coarser.empty(), NeighborhoodShape::Square),
         sample, sample_coarser, opt, error);
     if (!search.ok())
         return false;
-    const detail::OutputGather gather(search.layout(), out.channels, coarser);
+    const NeighborAccess access(search.layout(), out, coarser, NeighborView::Current);
+    LevelSearch::Worker worker = search.make_worker();
     const auto band = seam_band(w, h, (opt.n_at(l) - 1) / 2);
     for (auto [x, y] : band)
-        search.synthesize_pixel(out, gather, x, y);
+        search.synthesize_pixel(out, access, worker, x, y);
     report(band.size());
     return true;
 }
@@ -277,13 +296,13 @@ bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
 // The source map of the finest level: x and y of each pixel's sample position.
 void write_source_map(OIIO::ImageBuf& map, const OutputLevel& out, int sw, int sh)
 {
-    const int w = out.channels[0].width(), h = out.channels[0].height();
+    const int w = out.width(), h = out.height();
     PlanarImage m;
     m.channels = { Plane(w, h), Plane(w, h) };
     m.channel_names = { "x", "y" };
-    for (size_t i = 0; i < out.source.size(); ++i) {
-        m.channels[0].data()[i] = float(out.source[i] % uint32_t(sw));
-        m.channels[1].data()[i] = float(out.source[i] / uint32_t(sw));
+    for (size_t i = 0; i < out.live.source.size(); ++i) {
+        m.channels[0].data()[i] = float(out.live.source[i] % uint32_t(sw));
+        m.channels[1].data()[i] = float(out.live.source[i] / uint32_t(sw));
     }
     imagebuf_from_planes(m, map, false);
     map.specmod().erase_attribute("oiio:UnassociatedAlpha");
@@ -331,8 +350,8 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Neighbo
         out = initial_level(sample_levels[size_t(l)], halved(w, l), halved(h, l), opt.seed, l);
         const bool top = l == opt.levels - 1;
         if (!synthesize_level(out, sample_levels[size_t(l)],
-                top ? none : sample_levels[size_t(l + 1)], top ? none : coarser.channels, opt, l,
-                done, total, error)) {
+                top ? none : sample_levels[size_t(l + 1)], top ? none : coarser.live.channels, opt,
+                l, done, total, error)) {
             dst.errorfmt("{}", error);
             return false;
         }
@@ -341,7 +360,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Neighbo
 
     const bool unassociated = sample.spec().get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
     PlanarImage result;
-    result.channels = coarser.channels;
+    result.channels = coarser.live.channels;
     result.channel_names = in.channel_names;
     result.alpha_channel = in.alpha_channel;
     imagebuf_from_planes(result, dst, !unassociated);

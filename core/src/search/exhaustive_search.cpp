@@ -28,29 +28,29 @@ public:
         : m_vectors(vectors)
         , m_nthreads(nthreads)
         , m_nchunks((vectors.count + kChunk - 1) / kChunk)
-        , m_bests(m_nchunks)
     { }
 
     uint32_t nearest(const float* query, const uint32_t*, size_t) const override
     {
+        std::vector<Best> bests(m_nchunks);
         // Parallel only when a query is worth a task switch (~a million multiply-adds).
         const bool parallel = m_nchunks > 1 && m_vectors.count * size_t(m_vectors.dim) > (1u << 20);
         if (parallel)
             OIIO::parallel_for(
                 int64_t(0), int64_t(m_nchunks),
-                [&](int64_t c) { m_bests[size_t(c)] = scan(query, size_t(c)); },
+                [&](int64_t c) { bests[size_t(c)] = scan(query, size_t(c)); },
                 OIIO::paropt(m_nthreads).minitems(1));
         else
             for (size_t c = 0; c < m_nchunks; ++c)
-                m_bests[c] = scan(query, c);
+                bests[c] = scan(query, c);
         Best best;
-        for (const Best& b : m_bests)
+        for (const Best& b : bests)
             if (b.distance < best.distance)
                 best = b;
         return best.index;
     }
 
-    size_t memory_bytes() const override { return m_bests.size() * sizeof(Best); }
+    size_t memory_bytes() const override { return 0; }
 
 private:
     Best scan(const float* query, size_t chunk) const
@@ -70,7 +70,6 @@ private:
     VectorSet m_vectors;
     int m_nthreads;
     size_t m_nchunks;
-    mutable std::vector<Best> m_bests; // one query at a time (search.h)
 };
 
 } // namespace
