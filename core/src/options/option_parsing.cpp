@@ -78,27 +78,21 @@ bool parse_size3_option(std::string_view name, std::string_view text, int hi, in
     return true;
 }
 
-bool parse_number_list_option(std::string_view name, std::string_view text, float lo, float hi,
-    size_t max_count, std::vector<float>& values, std::string& error)
+namespace {
+
+// Parses "a,b,c" into `values` with parse_piece(piece, value, error) for each piece, then
+// checks there are at most max_count; `values` is unchanged on failure.
+template <class T, class ParsePiece>
+bool parse_list(std::string_view name, std::string_view text, size_t max_count,
+    std::vector<T>& values, std::string& error, ParsePiece&& parse_piece)
 {
-    std::vector<float> v;
+    std::vector<T> v;
     std::string_view rest = text;
     while (true) {
         const size_t comma = rest.find(',');
-        const std::string_view piece = rest.substr(0, comma);
-        float x = 0.0f;
-        auto [end, ec] = std::from_chars(piece.data(), piece.data() + piece.size(), x);
-        if (piece.empty() || ec != std::errc() || end != piece.data() + piece.size()) {
-            error = std::string(name) + "=" + std::string(text)
-                + " is not a list of numbers (expected e.g. 1,1,1.5)";
+        T x {};
+        if (!parse_piece(rest.substr(0, comma), x, error))
             return false;
-        }
-        if (!(x >= lo && x <= hi)) {
-            error = std::string(name) + "=" + std::string(text) + " : " + std::string(piece)
-                + " is out of range (" + format_number_list({ lo }) + ".."
-                + format_number_list({ hi }) + ")";
-            return false;
-        }
         v.push_back(x);
         if (comma == std::string_view::npos)
             break;
@@ -111,6 +105,29 @@ bool parse_number_list_option(std::string_view name, std::string_view text, floa
     }
     values = std::move(v);
     return true;
+}
+
+} // namespace
+
+bool parse_number_list_option(std::string_view name, std::string_view text, float lo, float hi,
+    size_t max_count, std::vector<float>& values, std::string& error)
+{
+    return parse_list(name, text, max_count, values, error,
+        [&](std::string_view piece, float& x, std::string& err) {
+            auto [end, ec] = std::from_chars(piece.data(), piece.data() + piece.size(), x);
+            if (piece.empty() || ec != std::errc() || end != piece.data() + piece.size()) {
+                err = std::string(name) + "=" + std::string(text)
+                    + " is not a list of numbers (expected e.g. 1,1,1.5)";
+                return false;
+            }
+            if (!(x >= lo && x <= hi)) {
+                err = std::string(name) + "=" + std::string(text) + " : " + std::string(piece)
+                    + " is out of range (" + format_number_list({ lo }) + ".."
+                    + format_number_list({ hi }) + ")";
+                return false;
+            }
+            return true;
+        });
 }
 
 std::string format_number_list(const std::vector<float>& values)
@@ -127,33 +144,21 @@ std::string format_number_list(const std::vector<float>& values)
 bool parse_int_list_option(std::string_view name, std::string_view text, int lo, int hi,
     size_t max_count, std::vector<int>& values, std::string& error)
 {
-    std::vector<int> v;
-    std::string_view rest = text;
-    while (true) {
-        const size_t comma = rest.find(',');
-        const std::string_view piece = rest.substr(0, comma);
-        int64_t x = 0;
-        if (!parse_int_option(name, piece, lo, hi, x, error)) {
-            const bool integer = error.find("out of range") != std::string::npos;
-            error = std::string(name) + "=" + std::string(text) + " : " + std::string(piece)
+    return parse_list(name, text, max_count, values, error,
+        [&](std::string_view piece, int& x, std::string& err) {
+            int64_t v = 0;
+            if (parse_int_option(name, piece, lo, hi, v, err)) {
+                x = int(v);
+                return true;
+            }
+            const bool integer = err.find("out of range") != std::string::npos;
+            err = std::string(name) + "=" + std::string(text) + " : " + std::string(piece)
                 + (integer ? " is out of range (" + std::to_string(lo) + ".." + std::to_string(hi)
                             + ")"
                            : std::string(" is not an integer")
                             + (max_count > 1 ? " (expected e.g. 9,7,5)" : ""));
             return false;
-        }
-        v.push_back(int(x));
-        if (comma == std::string_view::npos)
-            break;
-        rest.remove_prefix(comma + 1);
-    }
-    if (v.size() > max_count) {
-        error = std::string(name) + "=" + std::string(text) + " has " + std::to_string(v.size())
-            + " values (at most " + std::to_string(max_count) + ")";
-        return false;
-    }
-    values = std::move(v);
-    return true;
+        });
 }
 
 std::string format_int_list(const std::vector<int>& values)
