@@ -58,25 +58,30 @@ CandidateGrid candidate_grid(const NeighborhoodLayout& layout, int width, int he
     return g;
 }
 
+void sample_vector(const NeighborhoodLayout& layout, const std::vector<Plane>& level,
+    const std::vector<Plane>& coarser, int x, int y, float* out)
+{
+    const size_t nc = level.size();
+    for (const Offset& o : layout.fine)
+        for (size_t c = 0; c < nc; ++c)
+            *out++ = level[c](x + o.dx, y + o.dy);
+    for (const Offset& o : layout.coarse)
+        for (size_t c = 0; c < nc; ++c)
+            *out++ = coarser[c].at(x / 2 + o.dx, y / 2 + o.dy, Boundary::Reflect);
+}
+
 std::vector<float> sample_vectors(const NeighborhoodLayout& layout, const CandidateGrid& grid,
     const std::vector<Plane>& level, const std::vector<Plane>& coarser, int nthreads)
 {
-    const int nc = int(level.size());
-    const size_t dim = size_t(layout.npixels()) * size_t(nc);
+    const size_t dim = size_t(layout.npixels()) * level.size();
     std::vector<float> vectors(grid.count() * dim);
     OIIO::parallel_for(
         int64_t(0), int64_t(grid.rows),
         [&](int64_t row) {
             for (int col = 0; col < grid.columns; ++col) {
                 const size_t index = size_t(row) * size_t(grid.columns) + size_t(col);
-                const int x = grid.x0 + col, y = grid.y0 + int(row);
-                float* v = vectors.data() + index * dim;
-                for (const Offset& o : layout.fine)
-                    for (int c = 0; c < nc; ++c)
-                        *v++ = level[size_t(c)](x + o.dx, y + o.dy);
-                for (const Offset& o : layout.coarse)
-                    for (int c = 0; c < nc; ++c)
-                        *v++ = coarser[size_t(c)].at(x / 2 + o.dx, y / 2 + o.dy, Boundary::Reflect);
+                sample_vector(layout, level, coarser, grid.x0 + col, grid.y0 + int(row),
+                    vectors.data() + index * dim);
             }
         },
         OIIO::paropt(nthreads).minitems(1));

@@ -52,6 +52,11 @@ struct CandidateGrid {
 /// The candidates of a width x height level for `layout` (count 0 if it does not fit).
 CandidateGrid candidate_grid(const NeighborhoodLayout& layout, int width, int height);
 
+/// The neighbourhood vector of sample position (x, y), whose `fine` part lies inside
+/// `level`: `coarser` is reflected at its edges around the parent.
+void sample_vector(const NeighborhoodLayout& layout, const std::vector<Plane>& level,
+    const std::vector<Plane>& coarser, int x, int y, float* out);
+
 /// The neighbourhood vectors of every candidate of one sample level, row-major (count x
 /// layout.npixels() * channels): `level` at the candidate, `coarser` (may be empty when the
 /// layout has no coarse part) reflected at its edges around the parent.
@@ -127,5 +132,23 @@ int resolve_threads(int nthreads);
 /// rows complete (for progress). An exception in a worker stops the pass and is rethrown.
 void scanline_pass(int width, int height, int reach, int nthreads,
     const std::function<void(int, int, int)>& pixel, const std::function<void()>& row_done);
+
+} // namespace texsyn::detail
+
+namespace texsyn::detail {
+
+/// The pixels within `band` of the wrap-around seams of a width x height level, in the
+/// order the seam pass visits them: the 2 x band rows across the bottom/top seam (from row
+/// height - band down across the wrap), then the 2 x band columns across the right/left
+/// seam in the other rows.
+std::vector<std::pair<int, int>> seam_band(int width, int height, int band);
+
+/// The seam pass of one complete level: every pixel of seam_band(…, (n-1)/2) is
+/// re-synthesized, in order, with the full n x n square neighbourhood (plus the coarse
+/// square below the coarsest level), which now sees finished texture on both sides of the
+/// seam. Its candidates are the continuations of its neighbours' sources (k-coherence with
+/// k = 1) and its own source, compared exactly: a few dozen per pixel, no search structure.
+void repair_seams(OutputLevel& out, const std::vector<Plane>& sample,
+    const std::vector<Plane>& sample_coarser, const std::vector<Plane>& coarser, int n, int coarse);
 
 } // namespace texsyn::detail

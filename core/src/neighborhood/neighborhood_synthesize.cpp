@@ -223,29 +223,9 @@ private:
     std::unique_ptr<NeighborSearch> m_search;
 };
 
-// The pixels of the seam band of a w x h level: the `band` rows on each side of the
-// wrap-around between the last row and the first (from row h - band down across the wrap),
-// then the `band` columns on each side of the left/right wrap in the remaining rows.
-std::vector<std::pair<int, int>> seam_band(int w, int h, int band)
-{
-    std::vector<std::pair<int, int>> pixels;
-    std::vector<char> in_row_band(size_t(h), 0);
-    for (int i = 0; i < std::min(2 * band, h); ++i) {
-        const int y = ((h - band + i) % h + h) % h;
-        in_row_band[size_t(y)] = 1;
-        for (int x = 0; x < w; ++x)
-            pixels.emplace_back(x, y);
-    }
-    for (int y = 0; y < h; ++y)
-        if (!in_row_band[size_t(y)])
-            for (int i = 0; i < std::min(2 * band, w); ++i)
-                pixels.emplace_back(((w - band + i) % w + w) % w, y);
-    return pixels;
-}
-
 // Synthesizes output level `l` in scanline order; `coarser` is the synthesized level l+1
-// (empty at the coarsest). With opt.tile, then re-synthesizes the seam band with full
-// square neighbourhoods, which now see both sides of each seam. `done`/`total` count
+// (empty at the coarsest). With opt.tile, then re-synthesizes the seam band
+// (detail::repair_seams). `done`/`total` count
 // pixels over all levels for progress.
 bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
     const std::vector<Plane>& sample_coarser, const std::vector<Plane>& coarser,
@@ -277,19 +257,10 @@ bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
             },
             [&] { report(size_t(w)); });
     }
-    if (!repairs_seams(opt))
-        return true;
-    const LevelSearch search(
-        detail::make_layout(opt.n_at(l), opt.coarse, !coarser.empty(), NeighborhoodShape::Square),
-        sample, sample_coarser, opt, error);
-    if (!search.ok())
-        return false;
-    const NeighborAccess access(search.layout(), out, coarser, NeighborView::Current);
-    LevelSearch::Worker worker = search.make_worker();
-    const auto band = seam_band(w, h, (opt.n_at(l) - 1) / 2);
-    for (auto [x, y] : band)
-        search.synthesize_pixel(out, access, worker, x, y);
-    report(band.size());
+    if (repairs_seams(opt)) {
+        detail::repair_seams(out, sample, sample_coarser, coarser, opt.n_at(l), opt.coarse);
+        report(detail::seam_band(w, h, (opt.n_at(l) - 1) / 2).size());
+    }
     return true;
 }
 
@@ -342,7 +313,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Neighbo
         const int lw = halved(w, l), lh = halved(h, l);
         total += size_t(lw) * size_t(lh);
         if (repairs_seams(opt))
-            total += seam_band(lw, lh, (opt.n_at(l) - 1) / 2).size();
+            total += detail::seam_band(lw, lh, (opt.n_at(l) - 1) / 2).size();
     }
     OutputLevel coarser, out;
     static const std::vector<Plane> none;

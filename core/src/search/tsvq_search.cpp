@@ -356,26 +356,25 @@ public:
         : m_vectors(vectors)
         , m_candidates(uint32_t(settings.candidates))
         , m_tree(TreeBuilder(vectors, settings.nthreads).build())
-    {
-        // Each descent queues at most one sibling per level.
-        if (m_candidates > 1)
-            m_queue.reserve(std::min<size_t>(size_t(m_candidates) * (m_tree.depth + 1), 1u << 16));
-    }
+    { }
 
     uint32_t nearest(const float* query, const uint32_t*, size_t) const override
     {
         Best best;
         if (m_candidates == 1) {
-            scan(descend(0, query, false), query, best);
+            scan(descend(0, query, nullptr), query, best);
             return best.index;
         }
-        m_queue.clear();
-        m_queue.push_back({ 0.0f, 0 });
-        for (uint32_t visited = 0; visited < m_candidates && !m_queue.empty(); ++visited) {
-            std::pop_heap(m_queue.begin(), m_queue.end(), Entry::later);
-            const uint32_t start = m_queue.back().node;
-            m_queue.pop_back();
-            scan(descend(start, query, true), query, best);
+        // The unexplored subtrees: one queue per thread (nearest() may run on several at
+        // once), kept between queries so they do not allocate.
+        thread_local std::vector<Entry> queue;
+        queue.clear();
+        queue.push_back({ 0.0f, 0 });
+        for (uint32_t visited = 0; visited < m_candidates && !queue.empty(); ++visited) {
+            std::pop_heap(queue.begin(), queue.end(), Entry::later);
+            const uint32_t start = queue.back().node;
+            queue.pop_back();
+            scan(descend(start, query, &queue), query, best);
         }
         return best.index;
     }
@@ -383,7 +382,7 @@ public:
     size_t memory_bytes() const override
     {
         return m_tree.order.capacity() * sizeof(uint32_t) + m_tree.nodes.capacity() * sizeof(Node)
-            + m_tree.codewords.bytes() + m_queue.capacity() * sizeof(Entry);
+            + m_tree.codewords.bytes();
     }
 
 private:
@@ -405,22 +404,22 @@ private:
 
     const float* codeword(uint32_t node) const { return m_tree.codewords[node]; }
 
-    // Follows the nearer child codeword (ties left) from `node` to a leaf; queues the
-    // other child if `backtrack`.
-    uint32_t descend(uint32_t node, const float* query, bool backtrack) const
+    // Follows the nearer child codeword (ties left) from `node` to a leaf; pushes the other
+    // child onto the heap `queue` if there is one (backtracking).
+    uint32_t descend(uint32_t node, const float* query, std::vector<Entry>* queue) const
     {
         const int dim = m_vectors.dim;
         for (uint32_t child; (child = m_tree.nodes[node].child) != 0;) {
             const float d0 = distance2(query, codeword(child), dim);
-            if (!backtrack) {
+            if (!queue) {
                 node
                     = distance2_below(query, codeword(child + 1), dim, d0) < d0 ? child + 1 : child;
                 continue;
             }
             const float d1 = distance2(query, codeword(child + 1), dim);
             const bool right = d1 < d0;
-            m_queue.push_back({ right ? d0 : d1, right ? child : child + 1 });
-            std::push_heap(m_queue.begin(), m_queue.end(), Entry::later);
+            queue->push_back({ right ? d0 : d1, right ? child : child + 1 });
+            std::push_heap(queue->begin(), queue->end(), Entry::later);
             node = right ? child + 1 : child;
         }
         return node;
@@ -452,7 +451,6 @@ private:
     VectorSet m_vectors;
     uint32_t m_candidates;
     Tree m_tree;
-    mutable std::vector<Entry> m_queue; // one query at a time (search.h)
 };
 
 } // namespace
