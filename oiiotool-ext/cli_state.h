@@ -134,6 +134,28 @@ StackImage synthesis_result(const StackImage& base, std::vector<std::string> sou
 void run_synthesis(CliState& state, const std::string& command, StackImage result,
     const std::string& legend, const std::function<bool(StackImage&)>& synthesize);
 
+/// The recipe of a synthesis of the file `sample` (sample, colour spaces, colour config);
+/// describe_by_recipe adds the method and its options.
+Recipe recipe_of_sample(const CliState& state, const StackImage& sample);
+
+/// Makes `result`, a synthesis of `sample` by `method` with `opt`, carry its recipe if
+/// `sample` is a file (a recipe names a file); nthreads and progress are left out, they
+/// never change the result.
+template <class T>
+void describe_by_recipe(const CliState& state, const StackImage& sample, StackImage& result,
+    const char* method, T Recipe::*member, const T& opt)
+{
+    if (!sample.from_file)
+        return;
+    result.has_recipe = true;
+    result.recipe = recipe_of_sample(state, sample);
+    result.recipe.method = method;
+    T& options = result.recipe.*member;
+    options = opt;
+    options.nthreads = 0;
+    options.progress = nullptr;
+}
+
 /// A progress callback that shows "texsyn: COMMAND  NN%" on stderr.
 std::function<void(float)> progress_reporter(const std::string& command);
 

@@ -44,7 +44,10 @@ void run_neighborhood(CliState& state, const std::string& command, const std::st
     StackImage sample = state.pop(command);
     OIIO::ImageBuf map;
     run_synthesis(state, command, synthesis_result(sample, sample.sources), "", [&](StackImage& r) {
-        return neighborhood_synthesize(r.buf, sample.buf, opt, parsed.map.empty() ? nullptr : &map);
+        if (!neighborhood_synthesize(r.buf, sample.buf, opt, parsed.map.empty() ? nullptr : &map))
+            return false;
+        describe_by_recipe(state, sample, r, "neighborhood", &Recipe::neighborhood, opt);
+        return true;
     });
     if (parsed.map.empty())
         return;

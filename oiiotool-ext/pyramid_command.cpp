@@ -2,8 +2,6 @@
 // --pyramid: Heeger & Bergen pyramid synthesis.
 #include "cli_state.h"
 
-#include <cstdlib>
-
 namespace texsyn::cli {
 
 PyramidOptions parse_pyramid_options(const std::string& command, const std::string& modifiers)
@@ -26,18 +24,8 @@ void run_pyramid(CliState& state, const std::string& command, const std::string&
                       result.buf, *sample.statistics, opt, nullptr, subbands)
                                     : pyramid_synthesize(result.buf, sample.buf, opt, subbands)))
                 return false;
-            if (sample.from_file) { // a synthesis of a file: a recipe can say it
-                result.has_recipe = true;
-                result.recipe.sample = sample.sources[0];
-                result.recipe.iscolorspace = sample.input_colorspace;
-                result.recipe.pyramid = opt;
-                result.recipe.pyramid.nthreads = 0;
-                result.recipe.pyramid.progress = nullptr;
-                result.recipe.subbands = state.subbands;
-                result.recipe.colorconfig = state.colorconfig_path;
-                if (const char* env = std::getenv("OCIO"); result.recipe.colorconfig.empty() && env)
-                    result.recipe.colorconfig = env;
-            }
+            describe_by_recipe(state, sample, result, "pyramid", &Recipe::pyramid, opt);
+            result.recipe.subbands = state.subbands;
             return true;
         });
 }

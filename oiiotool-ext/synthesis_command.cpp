@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 
 namespace texsyn::cli {
 
@@ -15,6 +16,17 @@ StackImage synthesis_result(const StackImage& base, std::vector<std::string> sou
     result.input_format = base.input_format;
     result.output_colorspace = base.output_colorspace;
     return result;
+}
+
+Recipe recipe_of_sample(const CliState& state, const StackImage& sample)
+{
+    Recipe recipe;
+    recipe.sample = sample.sources[0];
+    recipe.iscolorspace = sample.input_colorspace;
+    recipe.colorconfig = state.colorconfig_path;
+    if (const char* env = std::getenv("OCIO"); recipe.colorconfig.empty() && env)
+        recipe.colorconfig = env;
+    return recipe;
 }
 
 std::function<void(float)> progress_reporter(const std::string& command)

@@ -15,6 +15,7 @@ packages=(
   libnanoflann-dev                          # kd-tree search (--neighborhood:search=kdtree)
   libopenvdb-dev libboost-iostreams-dev      # solid textures: .vdb output (OpenVDB's CMake module needs Boost.Iostreams)
   python3-openimageio                       # tests open recipes from Python
+  python3-jsonschema                        # tests validate recipes with docs/recipe.schema.json
   libgtest-dev libbenchmark-dev
   clang-format                              # the style check (tests: clang_format)
 )

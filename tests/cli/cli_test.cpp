@@ -402,8 +402,8 @@ TEST_F(Cli, RecipesAreWrittenForSynthesesOfFiles)
     EXPECT_EQ(recipe.pyramid.seed, 3u);
     EXPECT_EQ(recipe.pyramid.width, 40);
     expect_failure("stucco.png --recipe r2.texsyn",
-        "texsyn ERROR: --recipe r2.texsyn : the current image is not a --pyramid synthesis of "
-        "a sample file (recipes describe only those)",
+        "texsyn ERROR: --recipe r2.texsyn : the current image is not a --pyramid or "
+        "--neighborhood synthesis of a sample file (recipes describe only those)",
         { "stucco.png", "r.texsyn" });
     expect_failure("stucco.png --pyramid --recipe r2.json",
         "texsyn ERROR: --recipe r2.json : name the recipe *.texsyn", { "stucco.png", "r.texsyn" });
@@ -755,6 +755,6 @@ TEST_F(Cli, BadMixAndTransferInputIsRefused)
         "--transfer : stucco.png is an analysis, not an image (only --pyramid synthesizes from "
         "an analysis)");
     refused("rust.png stucco.png --mix:split=1 --recipe r.texsyn",
-        "--recipe r.texsyn : the current image is not a --pyramid synthesis of a sample file "
-        "(recipes describe only those)");
+        "--recipe r.texsyn : the current image is not a --pyramid or --neighborhood synthesis "
+        "of a sample file (recipes describe only those)");
 }

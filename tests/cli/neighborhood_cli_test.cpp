@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // End-to-end runs of --neighborhood and --apply-map, bad input included.
 #include <texsyn/io.h>
+#include <texsyn/recipe.h>
 
 #include <OpenImageIO/hash.h>
 
@@ -55,6 +56,28 @@ TEST_F(Cli, NeighborhoodWritesTheImageAndItsSourceMap)
     r = texsyn("--apply-map coords.exr stucco.png -o again.png");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(pixel_hash(read("again.png")), pixel_hash(out));
+}
+
+TEST_F(Cli, RecipeAfterNeighborhoodMakesTheSameImage)
+{
+    CliRun r = texsyn("--seed 3 stucco.png --neighborhood:size=32x24:levels=2:n=7,5:"
+                      "search=exhaustive:map=coords.exr -d float -o out.exr --recipe r.texsyn");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string json = slurp(dir / "r.texsyn");
+    EXPECT_NE(json.find("\"method\": \"neighborhood\""), std::string::npos) << json;
+    EXPECT_EQ(json.find("map"), std::string::npos) << json; // the tool's, not the method's
+    Recipe recipe;
+    std::string error;
+    ASSERT_TRUE(recipe_from_filename((dir / "r.texsyn").string(), recipe, error)) << error;
+    EXPECT_EQ(recipe.sample, (dir / "stucco.png").string());
+    EXPECT_EQ(recipe.neighborhood.seed, 3u);
+    EXPECT_FALSE(recipe.subbands);
+    OIIO::ImageBuf out = read("out.exr");
+    EXPECT_EQ(NeighborhoodOptions::table().format(recipe.neighborhood),
+        out.spec().get_string_attribute("synth:options"));
+    OIIO::ImageBuf again;
+    ASSERT_TRUE(run_recipe(recipe, again, nullptr, error)) << error;
+    EXPECT_EQ(pixel_hash(again), pixel_hash(out));
 }
 
 TEST_F(Cli, ApplyMapKeepsAnAlignedMapsValues)

@@ -81,6 +81,28 @@ TEST_F(Plugin, RecipeFromTheToolGivesTheToolsPixels)
     EXPECT_EQ(r.status, 0) << r.out;
 }
 
+TEST_F(Plugin, NeighborhoodRecipesGiveTheToolsPixels)
+{
+    // A 64x64 crop keeps the exhaustive search quick.
+    ASSERT_EQ(sh("oiiotool s.png --cut 64x64+0+0 -o c.png").status, 0);
+    const std::string options = "size=48x40:levels=2:n=7,5:search=exhaustive";
+    ASSERT_EQ(sh("'" + texsyn_exe + "' --seed 5 c.png --neighborhood:" + options
+                  + " -d float -o cli.exr --recipe r.texsyn")
+                  .status,
+        0);
+    ToolRun r = sh("oiiotool r.texsyn -d float -o plugin.exr && idiff -fail 0 cli.exr plugin.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    // The same by REST arguments, the method last.
+    r = sh("oiiotool 'c.png.texsyn?size=48x40&levels=2&n=7,5&search=exhaustive&seed=5"
+           "&method=neighborhood' -d float -o rest.exr && idiff -fail 0 cli.exr rest.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    OIIO::ImageBuf rest((dir / "rest.exr").string());
+    EXPECT_EQ(rest.spec().get_string_attribute("synth:method"), "neighborhood");
+    const std::string written = rest.spec().get_string_attribute("synth:options");
+    EXPECT_EQ(written.find("size=48x40:levels=2:n=7,5:"), 0u) << written;
+    EXPECT_NE(written.find(":search=exhaustive:"), std::string::npos) << written;
+}
+
 TEST_F(Plugin, AnAnalysisFileIsARecipesSample)
 {
     ASSERT_EQ(sh("'" + texsyn_exe + "' s.png --analyze -o s.tsa").status, 0);
@@ -152,7 +174,8 @@ TEST_F(Plugin, SubbandsAreFurtherSubimages)
 TEST_F(Plugin, BadRecipesFailCleanly)
 {
     write("malformed.texsyn", R"({ "sample": )");
-    write("unknown_key.texsyn", R"({ "sample": "s.png", "levels": 3 })");
+    write("unknown_key.texsyn", R"({ "sample": "s.png", "octaves": 3 })");
+    write("other_method.texsyn", R"({ "sample": "s.png", "levels": 3 })");
     write("unknown_method.texsyn", R"({ "sample": "s.png", "method": "quilting" })");
     write("missing_sample.texsyn", R"({ "sample": "nope.png" })");
     write("bad_value.texsyn", R"({ "sample": "s.png", "orientations": 99 })");
@@ -167,7 +190,11 @@ TEST_F(Plugin, BadRecipesFailCleanly)
     };
     const Case cases[] = {
         { "malformed.texsyn", "malformed.texsyn: malformed JSON", "" },
-        { "unknown_key.texsyn", "unknown_key.texsyn: unknown key 'levels'", "" },
+        { "unknown_key.texsyn", "unknown_key.texsyn: unknown key 'octaves'", "" },
+        { "other_method.texsyn",
+            "other_method.texsyn: key 'levels' is an option of method neighborhood, not of this "
+            "recipe's method pyramid",
+            "" },
         { "unknown_method.texsyn", "method=quilting is not one of pyramid", "" },
         { "missing_sample.texsyn", "nope.png: no such file", "" },
         { "bad_value.texsyn", "orientations=99 is out of range (1..8)", "" },
@@ -175,6 +202,8 @@ TEST_F(Plugin, BadRecipesFailCleanly)
         { "loop_a.texsyn", "recipes nest more than 8 deep", "" },
         { "'s.png.texsyn?size=abc'", "size=abc is not a size", "File does not exist" },
         { "'s.png.texsyn?bogus=1'", "unknown key 'bogus'", "File does not exist" },
+        { "'s.png.texsyn?iterations=1&method=neighborhood'",
+            "key 'iterations' is an option of method pyramid", "File does not exist" },
         { "'s.png.texsyn?size=64x64&seed'", "malformed filename", "File does not exist" },
     };
     for (const Case& c : cases) {

@@ -38,12 +38,23 @@ bool parse_int_list_option(std::string_view name, std::string_view text, int lo,
 /// "a,b,c".
 std::string format_int_list(const std::vector<int>& values);
 
+/// The kind of value an option takes: how a recipe's JSON may write it (docs/recipes.md).
+enum class OptionType {
+    Integer,  ///< "3" or 3 (an optional integer also "none")
+    Real,     ///< "0.5" or 0.5
+    Size,     ///< "WxH" (or "WxHxD") or [w, h] (or [w, h, d])
+    Integers, ///< "9,7,5", 9 or [9, 7, 5]
+    Numbers,  ///< "1,1.5", 1.5 or [1, 1.5]
+    Choice,   ///< one of the names in `allowed`
+};
+
 /// One option of an options struct T.
 template <class T>
 struct OptionField {
     std::string name;
     std::string help;
     std::string allowed; ///< human-readable range or choices, e.g. "1..8" or "exact|bins256"
+    OptionType type;
     std::function<bool(T&, std::string_view, std::string&)> parse;
     std::function<std::string(const T&)> format;
 };
@@ -56,15 +67,16 @@ public:
     OptionTable& integer(const char* name, int T::*member, int lo, int hi, const char* help)
     {
         std::string nm = name;
-        m_fields.push_back({ nm, help, std::to_string(lo) + ".." + std::to_string(hi),
-            [=](T& t, std::string_view v, std::string& err) {
-                int64_t x = 0;
-                if (!parse_int_option(nm, v, lo, hi, x, err))
-                    return false;
-                t.*member = int(x);
-                return true;
-            },
-            [=](const T& t) { return std::to_string(t.*member); } });
+        m_fields.push_back(
+            { nm, help, std::to_string(lo) + ".." + std::to_string(hi), OptionType::Integer,
+                [=](T& t, std::string_view v, std::string& err) {
+                    int64_t x = 0;
+                    if (!parse_int_option(nm, v, lo, hi, x, err))
+                        return false;
+                    t.*member = int(x);
+                    return true;
+                },
+                [=](const T& t) { return std::to_string(t.*member); } });
         return *this;
     }
     /// Two int members written as "WxH", each in [1, hi]; "0x0" is accepted only when
@@ -74,7 +86,7 @@ public:
     {
         std::string nm = name;
         std::string zero = zero_means;
-        m_fields.push_back({ nm, help, "WxH, 1.." + std::to_string(hi),
+        m_fields.push_back({ nm, help, "WxH, 1.." + std::to_string(hi), OptionType::Size,
             [=](T& t, std::string_view v, std::string& err) {
                 if (!zero.empty() && v == "0x0") {
                     t.*w = t.*h = 0;
@@ -92,7 +104,7 @@ public:
     {
         std::string nm = name;
         std::string zero = zero_means;
-        m_fields.push_back({ nm, help, "WxHxD, 1.." + std::to_string(hi),
+        m_fields.push_back({ nm, help, "WxHxD, 1.." + std::to_string(hi), OptionType::Size,
             [=](T& t, std::string_view v, std::string& err) {
                 if (!zero.empty() && v == "0x0x0") {
                     t.*w = t.*h = t.*d = 0;
@@ -112,6 +124,7 @@ public:
     {
         std::string nm = name;
         m_fields.push_back({ nm, help, std::to_string(lo) + ".." + std::to_string(hi) + "|none",
+            OptionType::Integer,
             [=](T& t, std::string_view v, std::string& err) {
                 if (v == "none") {
                     (t.*member).reset();
@@ -139,6 +152,7 @@ public:
         m_fields.push_back({ nm, help,
             "up to " + std::to_string(max_count) + " numbers " + format_number_list({ lo }) + ".."
                 + format_number_list({ hi }) + ", comma-separated",
+            OptionType::Numbers,
             [=](T& t, std::string_view v, std::string& err) {
                 if (v == empty) {
                     (t.*member).clear();
@@ -155,16 +169,16 @@ public:
     OptionTable& real(const char* name, float T::*member, float lo, float hi, const char* help)
     {
         std::string nm = name;
-        m_fields.push_back(
-            { nm, help, format_number_list({ lo }) + ".." + format_number_list({ hi }),
-                [=](T& t, std::string_view v, std::string& err) {
-                    std::vector<float> x;
-                    if (!parse_number_list_option(nm, v, lo, hi, 1, x, err))
-                        return false;
-                    t.*member = x[0];
-                    return true;
-                },
-                [=](const T& t) { return format_number_list({ t.*member }); } });
+        m_fields.push_back({ nm, help,
+            format_number_list({ lo }) + ".." + format_number_list({ hi }), OptionType::Real,
+            [=](T& t, std::string_view v, std::string& err) {
+                std::vector<float> x;
+                if (!parse_number_list_option(nm, v, lo, hi, 1, x, err))
+                    return false;
+                t.*member = x[0];
+                return true;
+            },
+            [=](const T& t) { return format_number_list({ t.*member }); } });
         return *this;
     }
     /// A non-empty list of up to `max_count` integers in [lo, hi], written "a,b,c".
@@ -175,6 +189,7 @@ public:
         m_fields.push_back({ nm, help,
             "up to " + std::to_string(max_count) + " integers " + std::to_string(lo) + ".."
                 + std::to_string(hi) + ", comma-separated",
+            OptionType::Integers,
             [=](T& t, std::string_view v, std::string& err) {
                 return parse_int_list_option(nm, v, lo, hi, max_count, t.*member, err);
             },
@@ -190,7 +205,7 @@ public:
         std::string allowed;
         for (auto& v : values)
             allowed += (allowed.empty() ? "" : "|") + v.first;
-        m_fields.push_back({ nm, help, allowed,
+        m_fields.push_back({ nm, help, allowed, OptionType::Choice,
             [=](T& t, std::string_view v, std::string& err) {
                 for (auto& c : values)
                     if (c.first == v) {
@@ -220,7 +235,7 @@ public:
             for (auto& h : help)
                 if (h.first == f.name)
                     text = h.second;
-            m_fields.push_back({ f.name, text, f.allowed,
+            m_fields.push_back({ f.name, text, f.allowed, f.type,
                 [member, parse = f.parse](T& t, std::string_view v, std::string& err) {
                     return parse(t.*member, v, err);
                 },
@@ -231,20 +246,29 @@ public:
 
     const std::vector<OptionField<T>>& fields() const { return m_fields; }
 
+    /// The option called `name`, or null.
+    const OptionField<T>* find(std::string_view name) const
+    {
+        for (auto& f : m_fields)
+            if (f.name == name)
+                return &f;
+        return nullptr;
+    }
+
     /// Sets option `name` from `value`; false with a message for an unknown name or a
     /// bad value. The struct is unchanged on failure.
     bool set(T& opts, std::string_view name, std::string_view value, std::string& error) const
     {
-        for (auto& f : m_fields)
-            if (f.name == name) {
-                T copy = opts;
-                if (!f.parse(copy, value, error))
-                    return false;
-                opts = std::move(copy);
-                return true;
-            }
-        error = "unknown option '" + std::string(name) + "' (known: " + names() + ")";
-        return false;
+        const OptionField<T>* f = find(name);
+        if (!f) {
+            error = "unknown option '" + std::string(name) + "' (known: " + names() + ")";
+            return false;
+        }
+        T copy = opts;
+        if (!f->parse(copy, value, error))
+            return false;
+        opts = std::move(copy);
+        return true;
     }
 
     /// "name=value:name=value…" with every option, in table order (synth:options).

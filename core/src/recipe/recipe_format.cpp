@@ -8,9 +8,14 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 #include <OpenImageIO/strutil.h>
 #include <nlohmann/json.hpp>
+
+#include <texsyn/stats.h>
+
+#include "recipe_pvt.h"
 
 namespace texsyn {
 
@@ -36,6 +41,56 @@ bool parse_bool(const std::string& key, const std::string& value, bool& out, std
         return true;
     }
     error = key + "=" + value + " is not a boolean (use true, false, 1 or 0)";
+    return false;
+}
+
+// The recipe's own keys, those of no method.
+constexpr const char* recipe_keys
+    = "texsyn_recipe, sample, method, seed, iscolorspace, tocolorspace, colorconfig, subbands";
+
+// The type of the method option called `key` (of the first method that has it), or null.
+const OptionType* option_type(const std::string& key)
+{
+    const OptionType* type = nullptr;
+    detail::for_each_recipe_method([&](const char*, auto member) {
+        if (auto* field = detail::table_of(member).find(key); field && !type)
+            type = &field->type;
+    });
+    return type;
+}
+
+// Sets a method option: for the recipe's method, and for every other method with an option
+// of that name that takes the value (so that a later method=… keeps it).
+bool set_option(Recipe& r, const std::string& key, const std::string& value, std::string& error)
+{
+    bool has = false, ok = false;
+    std::string names;
+    detail::visit_recipe_options(r, [&](auto& opt) {
+        const auto& table = std::decay_t<decltype(opt)>::table();
+        names = table.names();
+        has = table.find(key) != nullptr;
+        ok = has && table.set(opt, key, value, error);
+    });
+    if (has && !ok)
+        return false;
+    std::string owner;
+    detail::for_each_recipe_method([&](const char* name, auto member) {
+        const auto& table = detail::table_of(member);
+        if (r.method == name || !table.find(key))
+            return;
+        std::string ignored; // a value that only the recipe's method takes stays its own
+        if (has)
+            table.set(r.*member, key, value, ignored);
+        else if (owner.empty())
+            owner = name;
+    });
+    if (has)
+        return true;
+    if (!owner.empty())
+        error = "key '" + key + "' is an option of method " + owner
+            + ", not of this recipe's method " + r.method + " (give method=" + owner + ")";
+    else
+        error = "unknown key '" + key + "' (known: " + recipe_keys + ", " + names + ")";
     return false;
 }
 
@@ -67,8 +122,10 @@ bool set_key(Recipe& r, const std::string& key, const std::string& value,
         return true;
     }
     if (key == "method") {
-        if (value != "pyramid") {
-            error = "method=" + value + " is not one of pyramid";
+        bool known = false;
+        detail::for_each_recipe_method([&](const char* name, auto) { known |= value == name; });
+        if (!known) {
+            error = "method=" + value + " is not one of " + detail::recipe_method_names();
             return false;
         }
         r.method = value;
@@ -78,24 +135,44 @@ bool set_key(Recipe& r, const std::string& key, const std::string& value,
         int64_t v = 0;
         if (!parse_int_option(key, value, 0, 2147483647, v, error))
             return false;
-        r.pyramid.seed = uint64_t(v);
+        detail::for_each_recipe_method(
+            [&](const char*, auto member) { (r.*member).seed = uint64_t(v); });
         return true;
     }
     if (key == "subbands")
         return parse_bool(key, value, r.subbands, error);
-    std::string option_error;
-    if (PyramidOptions::table().set(r.pyramid, key, value, option_error))
-        return true;
-    error = option_error.rfind("unknown option", 0) == 0 ? "unknown key '" + key
-            + "' (known: texsyn_recipe, sample, method, seed, iscolorspace, tocolorspace, "
-              "colorconfig, subbands, "
-            + PyramidOptions::table().names() + ")"
-                                                         : option_error;
-    return false;
+    return set_option(r, key, value, error);
 }
 
-// A JSON value in the text form set_key takes: strings as they are, integers in decimal,
-// booleans as 1/0, [w, h] as "WxH".
+// Sets the keys of one JSON object or one REST string: `method` first, wherever it stands,
+// so that the options after it and before it are the same method's.
+bool set_keys(Recipe& r, const std::vector<std::pair<std::string, std::string>>& pairs,
+    const std::string& base_dir, std::string& error)
+{
+    for (bool method : { true, false })
+        for (auto& [key, value] : pairs)
+            if ((key == "method") == method && !set_key(r, key, value, base_dir, error))
+                return false;
+    return true;
+}
+
+// A JSON number as text, if it is an integer or (with `fractional`) any number.
+bool number_text(const nlohmann::json& v, bool fractional, std::string& out)
+{
+    if (v.is_number_unsigned() && v.get<uint64_t>() > uint64_t(INT64_MAX))
+        out = std::to_string(v.get<uint64_t>());
+    else if (v.is_number_integer())
+        out = std::to_string(v.get<int64_t>());
+    else if (v.is_number_float() && fractional)
+        out = v.dump(); // the shortest text that reads back as the same double
+    else
+        return false;
+    return true;
+}
+
+// A JSON value in the text form set_key takes: strings as they are; integers in decimal;
+// booleans (subbands only) as 1/0; fractional numbers for real and number-list options;
+// arrays of numbers for sizes ([w, h] as "WxH") and lists ([9, 7] as "9,7").
 bool json_text(
     const std::string& key, const nlohmann::json& v, std::string& out, std::string& error)
 {
@@ -103,30 +180,42 @@ bool json_text(
         = { "sample", "method", "iscolorspace", "tocolorspace", "colorconfig" };
     const bool is_string_key
         = std::find(std::begin(string_keys), std::end(string_keys), key) != std::end(string_keys);
-    if (is_string_key && !v.is_string()) {
-        error = key + ": expected a string, not " + v.dump();
-        return false;
-    }
-    if (v.is_boolean() && key != "subbands") {
-        error = key + ": expected a number or a string, not " + v.dump();
-        return false;
-    }
-    if (v.is_string())
+    const OptionType* type = option_type(key);
+    const bool is_list = type && (*type == OptionType::Integers || *type == OptionType::Numbers);
+    const bool fractional = type && (*type == OptionType::Real || *type == OptionType::Numbers);
+    const bool takes_number = !is_string_key && !(type && *type == OptionType::Size)
+        && !(type && *type == OptionType::Choice);
+    if (v.is_string()) {
         out = v.get<std::string>();
-    else if (v.is_number_unsigned() && v.get<uint64_t>() > uint64_t(INT64_MAX))
-        out = std::to_string(v.get<uint64_t>());
-    else if (v.is_number_integer())
-        out = std::to_string(v.get<int64_t>());
-    else if (v.is_boolean())
-        out = v.get<bool>() ? "1" : "0";
-    else if (v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer())
-        out = std::to_string(v[0].get<int64_t>()) + "x" + std::to_string(v[1].get<int64_t>());
-    else {
-        error = key + ": expected a string, an integer, a boolean or [width, height], not "
-            + v.dump();
-        return false;
+        return true;
     }
-    return true;
+    if (v.is_boolean() && key == "subbands") {
+        out = v.get<bool>() ? "1" : "0";
+        return true;
+    }
+    if (takes_number && number_text(v, fractional, out))
+        return true;
+    if (v.is_array() && !v.empty() && (is_list || (type && *type == OptionType::Size))) {
+        out.clear();
+        bool numbers = true;
+        for (const nlohmann::json& item : v) {
+            std::string text;
+            numbers = numbers && number_text(item, fractional, text);
+            out += (out.empty() ? "" : is_list ? "," : "x") + text;
+        }
+        if (numbers)
+            return true;
+    }
+    const char* expected = is_string_key ? "a string"
+        : key == "subbands"              ? "a boolean, an integer or a string"
+        : !type                          ? "an integer or a string"
+        : *type == OptionType::Size      ? "a string \"WxH\" or [width, height]"
+        : *type == OptionType::Choice    ? "a string"
+        : is_list                        ? "a number, a string \"a,b,c\" or an array of numbers"
+        : fractional                     ? "a number or a string"
+                                         : "an integer or a string";
+    error = key + ": expected " + expected + ", not " + v.dump();
+    return false;
 }
 
 // "%20" -> " ": REST values as URLs write them (a malformed escape is kept as it is).
@@ -147,6 +236,36 @@ std::string percent_decode(const std::string& text)
 
 } // namespace
 
+std::string detail::recipe_method_names()
+{
+    std::string names;
+    detail::for_each_recipe_method(
+        [&](const char* name, auto) { names += (names.empty() ? "" : "|") + std::string(name); });
+    return names;
+}
+
+bool Recipe::validate(std::string& error) const
+{
+    bool ok = true;
+    if (!detail::visit_recipe_options(*this, [&](const auto& opt) { ok = opt.validate(error); })) {
+        error = "method=" + method + " is not one of " + detail::recipe_method_names();
+        return false;
+    }
+    if (!ok || method == "pyramid")
+        return ok;
+    if (subbands) {
+        error = "subbands=1 : method " + method + " has no subbands (only method pyramid does)";
+        return false;
+    }
+    if (is_analysis_filename(sample)) {
+        error = "sample=" + sample
+            + " : an analysis file (.tsa) is for method pyramid only; method " + method
+            + " needs a sample image";
+        return false;
+    }
+    return true;
+}
+
 bool parse_recipe(
     const std::string& text, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
@@ -162,12 +281,15 @@ bool parse_recipe(
         error = "a recipe is a JSON object ({ \"sample\": ..., ... })";
         return false;
     }
-    Recipe r;
+    std::vector<std::pair<std::string, std::string>> pairs;
     for (auto& [key, value] : j.items()) {
-        std::string v;
-        if (!json_text(key, value, v, error) || !set_key(r, key, v, base_dir, error))
+        pairs.emplace_back(key, "");
+        if (!json_text(key, value, pairs.back().second, error))
             return false;
     }
+    Recipe r;
+    if (!set_keys(r, pairs, base_dir, error))
+        return false;
     if (r.sample.empty()) {
         error = "the recipe names no sample (\"sample\": \"file.png\")";
         return false;
@@ -179,8 +301,7 @@ bool parse_recipe(
 bool apply_recipe_arguments(
     const std::string& arguments, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
-    Recipe r = recipe;
-    std::vector<std::string> seen;
+    std::vector<std::pair<std::string, std::string>> pairs;
     for (const std::string& piece : OIIO::Strutil::splits(arguments, "&")) {
         size_t eq = piece.find('=');
         if (eq == std::string::npos || eq == 0) {
@@ -188,14 +309,16 @@ bool apply_recipe_arguments(
             return false;
         }
         const std::string key = piece.substr(0, eq);
-        if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
-            error = key + " is given twice";
-            return false;
-        }
-        seen.push_back(key);
-        if (!set_key(r, key, percent_decode(piece.substr(eq + 1)), base_dir, error))
-            return false;
+        for (auto& seen : pairs)
+            if (seen.first == key) {
+                error = key + " is given twice";
+                return false;
+            }
+        pairs.emplace_back(key, percent_decode(piece.substr(eq + 1)));
     }
+    Recipe r = recipe;
+    if (!set_keys(r, pairs, base_dir, error))
+        return false;
     recipe = std::move(r);
     return true;
 }
@@ -231,7 +354,7 @@ bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& 
         error = base + ": " + error;
         return false;
     }
-    if (!r.pyramid.validate(error)) {
+    if (!r.validate(error)) {
         error = base + ": " + error;
         return false;
     }
@@ -258,18 +381,20 @@ std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir)
     j["texsyn_recipe"] = recipe_version;
     j["sample"] = relative(recipe.sample);
     j["method"] = recipe.method;
-    j["seed"] = int64_t(recipe.pyramid.seed);
-    std::vector<std::pair<std::string, std::string>> pairs;
-    std::string ignored;
-    split_option_string(PyramidOptions::table().format(recipe.pyramid), pairs, ignored);
-    for (auto& [key, value] : pairs) {
-        const bool integer
-            = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
-        if (integer)
-            j[key] = std::stoll(value);
-        else
-            j[key] = value;
-    }
+    detail::visit_recipe_options(recipe, [&](const auto& opt) {
+        j["seed"] = int64_t(opt.seed);
+        std::vector<std::pair<std::string, std::string>> pairs;
+        std::string ignored;
+        split_option_string(std::decay_t<decltype(opt)>::table().format(opt), pairs, ignored);
+        for (auto& [key, value] : pairs) {
+            const bool integer
+                = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+            if (integer)
+                j[key] = std::stoll(value);
+            else
+                j[key] = value;
+        }
+    });
     if (!recipe.iscolorspace.empty())
         j["iscolorspace"] = recipe.iscolorspace;
     if (!recipe.tocolorspace.empty())

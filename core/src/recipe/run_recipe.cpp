@@ -8,6 +8,8 @@
 #include <texsyn/color.h>
 #include <texsyn/io.h>
 
+#include "recipe_pvt.h"
+
 namespace texsyn {
 
 namespace {
@@ -26,12 +28,12 @@ struct DepthGuard {
 };
 
 // The synthesis of the recipe's sample (an image, or an analysis file), scene-linear.
-bool synthesize_sample(const Recipe& recipe, const ColorConfig& colors, OIIO::ImageBuf& synth,
-    std::vector<NamedImage>* subbands, std::string& error)
+bool synthesize_sample(const Recipe& recipe, const ColorConfig& colors, int nthreads,
+    OIIO::ImageBuf& synth, std::vector<NamedImage>* subbands, std::string& error)
 {
     if (!recipe.subbands)
         subbands = nullptr;
-    if (is_analysis_filename(recipe.sample)) {
+    if (is_analysis_filename(recipe.sample)) { // method pyramid (Recipe::validate)
         TextureStatistics stats;
         if (!read_statistics(recipe.sample, stats, error))
             return false;
@@ -47,12 +49,13 @@ bool synthesize_sample(const Recipe& recipe, const ColorConfig& colors, OIIO::Im
     const std::string from = recipe.iscolorspace.empty() ? colors.guess_colorspace(native)
                                                          : colors.resolve(recipe.iscolorspace);
     OIIO::ImageBuf sample;
-    if (!colors.convert_image(
-            file, from, colors.scene_linear(), false, sample, error, recipe.pyramid.nthreads)) {
+    if (!colors.convert_image(file, from, colors.scene_linear(), false, sample, error, nthreads)) {
         error = recipe.sample + ": " + error;
         return false;
     }
-    if (pyramid_synthesize(synth, sample, recipe.pyramid, subbands))
+    if (recipe.method == "neighborhood"
+            ? neighborhood_synthesize(synth, sample, recipe.neighborhood)
+            : pyramid_synthesize(synth, sample, recipe.pyramid, subbands))
         return true;
     error = synth.geterror();
     return false;
@@ -69,6 +72,10 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
             + " deep (does a recipe use itself as its sample?)";
         return false;
     }
+    if (!recipe.validate(error))
+        return false;
+    int nthreads = 0;
+    detail::visit_recipe_options(recipe, [&](const auto& opt) { nthreads = opt.nthreads; });
     auto colors = ColorConfig::load(recipe.colorconfig, error);
     if (!colors)
         return false;
@@ -82,10 +89,9 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
             return false;
         }
     OIIO::ImageBuf synth;
-    if (!synthesize_sample(recipe, *colors, synth, subbands, error))
+    if (!synthesize_sample(recipe, *colors, nthreads, synth, subbands, error))
         return false;
-    if (!colors->convert_image(
-            synth, colors->scene_linear(), to, true, dst, error, recipe.pyramid.nthreads))
+    if (!colors->convert_image(synth, colors->scene_linear(), to, true, dst, error, nthreads))
         return false;
     dst.specmod().attribute("synth:sample", OIIO::Filesystem::filename(recipe.sample));
     dst.specmod().attribute("synth:colorspace", to);

@@ -1,0 +1,84 @@
+# SPDX-License-Identifier: Apache-2.0
+# docs/recipe.schema.json validates what texsyn reads and writes: the recipes in
+# docs/recipes.md, recipes that `texsyn --recipe` writes for both methods, and good and bad
+# examples, each bad one for the reason given. (recipe_test checks the schema against the
+# option tables.)
+# usage: check_recipe_schema.py TEXSYN_EXE REPO_DIR WORK_DIR
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import jsonschema
+
+texsyn, repo, work = (os.path.abspath(a) for a in sys.argv[1:4])
+with open(os.path.join(repo, "docs", "recipe.schema.json")) as f:
+    schema = json.load(f)
+jsonschema.Draft202012Validator.check_schema(schema)
+validator = jsonschema.Draft202012Validator(schema)
+failures = []
+checked = 0
+
+
+def check(name, recipe, valid):
+    global checked
+    checked += 1
+    errors = list(validator.iter_errors(recipe))
+    if valid and errors:
+        failures.append(f"{name}: should validate, but: {errors[0].message}")
+    if not valid and not errors:
+        failures.append(f"{name}: should not validate")
+
+
+with open(os.path.join(repo, "docs", "recipes.md")) as f:
+    for i, block in enumerate(re.findall(r"```json\n(.*?)```", f.read(), re.S)):
+        check(f"docs/recipes.md json block {i}", json.loads(block), True)
+
+# Recipes as the tool writes them.
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+shutil.copy(os.path.join(repo, "data", "samples", "stucco_yellow.png"), work)
+env = dict(os.environ, OCIO="")
+for method, modifiers in [
+    ("pyramid", "size=32x32:iterations=1:gain=1.5"),
+    ("neighborhood", "size=16x16:levels=1:n=3:search=exhaustive:eps=0.5"),
+]:
+    subprocess.run([texsyn, "stucco_yellow.png", f"--{method}:{modifiers}", "-o", "out.exr",
+                    "--recipe", f"{method}.texsyn"], cwd=work, env=env, check=True)
+    with open(os.path.join(work, f"{method}.texsyn")) as f:
+        check(f"texsyn --{method} --recipe", json.load(f), True)
+
+good = {
+    "minimal": {"sample": "a.png"},
+    "pyramid by name": {"sample": "a.png", "method": "pyramid", "size": [64, 32],
+                        "gain": [1, 1.5], "subbands": True},
+    "pyramid from an analysis": {"sample": "a.tsa", "size": "64x64"},
+    "neighborhood": {"sample": "a.png", "method": "neighborhood", "size": "64x64", "levels": 2,
+                     "n": "7,5", "search": "exhaustive", "eps": 0.5, "subbands": False},
+    "neighborhood n as a number": {"sample": "a.png", "method": "neighborhood", "n": 9},
+    "neighborhood n as an array": {"sample": "a.png", "method": "neighborhood", "n": [9, 7]},
+}
+bad = {
+    "no sample": {"size": "8x8"},
+    "unknown key": {"sample": "a.png", "octaves": 3},
+    "unknown method": {"sample": "a.png", "method": "quilting"},
+    "a neighborhood option without the method": {"sample": "a.png", "levels": 2},
+    "a neighborhood option for the pyramid": {"sample": "a.png", "method": "pyramid", "n": 9},
+    "a pyramid option for the neighborhood": {"sample": "a.png", "method": "neighborhood",
+                                              "iterations": 2},
+    "neighborhood subbands": {"sample": "a.png", "method": "neighborhood", "subbands": True},
+    "neighborhood from an analysis": {"sample": "a.TSA", "method": "neighborhood"},
+    "n too small": {"sample": "a.png", "method": "neighborhood", "n": [9, 1]},
+    "unknown search": {"sample": "a.png", "method": "neighborhood", "search": "brute"},
+}
+for name, recipe in good.items():
+    check(name, recipe, True)
+for name, recipe in bad.items():
+    check(name, recipe, False)
+
+for failure in failures:
+    print("FAIL", failure)
+print(f"{checked - len(failures)} passed, {len(failures)} failed")
+sys.exit(1 if failures else 0)
