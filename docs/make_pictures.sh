@@ -84,5 +84,35 @@ oiiotool "${strip[@]}" --mosaic 5x1 -o "$out/weights_rust_stucco.png"
 rm -f "${strip[@]}"
 "$texsyn" --seed 1 "$samples/marble_pink.png" "$samples/stucco_yellow.png" --transfer -o "$out/transfer_marble_stucco.png"
 "$texsyn" --seed 1 "$samples/paper_crinkled.png" "$samples/marble_pink.png" --transfer -o "$out/transfer_paper_marble.png"
+# docs/neighborhood.md: each search back-end on grass and bricks (192x192 from the 256x256
+# samples, seed 1), two-by-two tilings with and without the seam pass, the report's Figure 3
+# (the causal L against the square with noise), and a source map re-applied to a height map.
+for s in grass bricks; do
+  row=("$samples/$s.png")
+  for search in exhaustive tsvq kdtree coherent; do
+    "$texsyn" --seed 1 "$samples/$s.png" --neighborhood:size=192x192:search=$search -o "$out/nb_$search.png"
+    row+=("$out/nb_$search.png")
+  done
+  oiiotool "${row[@]}" --mosaic:pad=4 5x1 -o "$out/neighborhood_${s}_searches.png"
+  rm -f "$out"/nb_*.png
+done
+for tile in 0 1; do
+  "$texsyn" --seed 2 "$samples/bricks.png" --neighborhood:size=128x128:tile=$tile -o "$out/nb_tile.png"
+  oiiotool "$out/nb_tile.png" --dup --mosaic 2x1 --dup --mosaic 1x2 -o "$out/neighborhood_bricks_tile$tile.png"
+done
+oiiotool "$samples/stucco_yellow.png" --cut 64x64+0+0 -o "$out/nb_crop.png"
+for shape in causal square; do
+  "$texsyn" --seed 1 "$out/nb_crop.png" --neighborhood:size=128x128:levels=1:n=7:shape=$shape \
+      -o "$out/nb_$shape.png"
+done
+oiiotool "$out/nb_crop.png" --resize 128x128 "$out/nb_causal.png" "$out/nb_square.png" \
+    --mosaic:pad=4 3x1 -o "$out/neighborhood_figure3.png"
+"$texsyn" --seed 1 "$samples/bricks.png" --neighborhood:size=256x256:map="$out/nb_map.exr" \
+    -o "$out/nb_colour.png"
+oiiotool "$samples/bricks.png" --chsum:weight=0.3,0.6,0.1 -o "$out/nb_height.png"
+"$texsyn" --iscolorspace Raw --apply-map "$out/nb_map.exr" "$out/nb_height.png" -o "$out/nb_height_big.png"
+oiiotool "$out/nb_colour.png" "$out/nb_height_big.png" --ch 0,0,0 --mosaic:pad=4 2x1 \
+    -o "$out/neighborhood_apply_map.png"
+rm -f "$out"/nb_*
 rm -f "$out/stucco_tile.png" "$out/rust.tsa"
 ls -la "$out"
