@@ -6,17 +6,6 @@
 
 namespace texsyn::detail {
 
-namespace {
-
-// i mod n in [0, n) for any i.
-inline int wrap(int i, int n)
-{
-    const int r = i % n;
-    return r < 0 ? r + n : r;
-}
-
-} // namespace
-
 NeighborhoodLayout make_layout(int n, int coarse, bool has_coarser, NeighborhoodShape shape)
 {
     NeighborhoodLayout layout;
@@ -55,12 +44,14 @@ CandidateGrid candidate_grid(const NeighborhoodLayout& layout, int width, int he
     return g;
 }
 
-std::vector<float> sample_vectors(const NeighborhoodLayout& layout, const CandidateGrid& grid,
+SampleVectors sample_vectors(const NeighborhoodLayout& layout, const CandidateGrid& grid,
     const std::vector<Plane>& level, const std::vector<Plane>& coarser, int nthreads)
 {
     const int nc = int(level.size());
     const size_t dim = size_t(layout.npixels()) * size_t(nc);
-    std::vector<float> vectors(grid.count() * dim);
+    const int cw = coarser.empty() ? 0 : coarser[0].width();
+    const int ch = coarser.empty() ? 0 : coarser[0].height();
+    SampleVectors vectors(grid.count() * dim);
     OIIO::parallel_for(
         int64_t(0), int64_t(grid.rows),
         [&](int64_t row) {
@@ -71,9 +62,15 @@ std::vector<float> sample_vectors(const NeighborhoodLayout& layout, const Candid
                 for (const Offset& o : layout.fine)
                     for (int c = 0; c < nc; ++c)
                         *v++ = level[size_t(c)](x + o.dx, y + o.dy);
-                for (const Offset& o : layout.coarse)
+                for (const Offset& o : layout.coarse) {
+                    // Reflection only where the square leaves the coarser level (Plane::at
+                    // is a call per value).
+                    const int cx = x / 2 + o.dx, cy = y / 2 + o.dy;
+                    const bool inside = cx >= 0 && cy >= 0 && cx < cw && cy < ch;
                     for (int c = 0; c < nc; ++c)
-                        *v++ = coarser[size_t(c)].at(x / 2 + o.dx, y / 2 + o.dy, Boundary::Reflect);
+                        *v++ = inside ? coarser[size_t(c)](cx, cy)
+                                      : coarser[size_t(c)].at(cx, cy, Boundary::Reflect);
+                }
             }
         },
         OIIO::paropt(nthreads).minitems(1));

@@ -121,7 +121,7 @@ public:
         m_hints.clear();
         const int w = out.channels[0].width(), h = out.channels[0].height();
         for (const detail::Offset& o : layout.fine) {
-            const int qx = (x + o.dx + w) % w, qy = (y + o.dy + h) % h;
+            const int qx = detail::wrap(x + o.dx, w), qy = detail::wrap(y + o.dy, h);
             const uint32_t s = out.source[size_t(qy) * size_t(w) + size_t(qx)];
             const int64_t c = grid.index(
                 int(s % uint32_t(sample_width)) - o.dx, int(s / uint32_t(sample_width)) - o.dy);
@@ -162,7 +162,7 @@ bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
         = detail::make_layout(opt.n_at(l), opt.coarse, !coarser.empty(), opt.shape);
     const int sw = sample[0].width();
     const CandidateGrid grid = detail::candidate_grid(layout, sw, sample[0].height());
-    const std::vector<float> vectors
+    const detail::SampleVectors vectors
         = detail::sample_vectors(layout, grid, sample, sample_coarser, opt.nthreads);
     VectorSet set;
     set.data = vectors.data();
