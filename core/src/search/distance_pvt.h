@@ -62,8 +62,13 @@ inline void prefetch_row(const float* row, int dim)
 {
     const char* p = reinterpret_cast<const char*>(row);
     const char* end = reinterpret_cast<const char*>(row + dim);
+#if defined(__GNUC__)
     for (; p < end; p += 64)
         __builtin_prefetch(p);
+#else
+    (void)p;
+    (void)end;
+#endif
 }
 
 /// The nearest of candidates offered one at a time, by distance2 to `query`; ties go to the
