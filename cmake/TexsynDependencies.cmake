@@ -18,6 +18,8 @@ endif()
 find_package(Imath CONFIG REQUIRED)
 find_package(Eigen3 3.3 CONFIG REQUIRED)
 find_package(nlohmann_json 3 CONFIG REQUIRED)
+# Header-only (the kd-tree search back-end); Debian's config is in /usr/share/nanoflann/cmake.
+find_package(nanoflann CONFIG REQUIRED)
 # Debian ships only the shared float build; without SHARED the config looks for static targets.
 find_package(kissfft CONFIG REQUIRED COMPONENTS SHARED float)
 

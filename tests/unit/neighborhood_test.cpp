@@ -118,6 +118,24 @@ TEST(Neighborhood, ResultIgnoresThreadCount)
     EXPECT_NE(pixel_hash(neighborhood_synthesize(sample, opt)), one);
 }
 
+// Rows run as a wavefront on the workers: the result must be the one-thread result for
+// every back-end.
+TEST(Neighborhood, EveryBackEndIgnoresThreadCount)
+{
+    const OIIO::ImageBuf sample = crop("grass.png", 96, 96);
+    for (SearchMethod search :
+        { SearchMethod::Tsvq, SearchMethod::KdTree, SearchMethod::Coherent }) {
+        NeighborhoodOptions opt = options(128, 96, 3, { 9, 7, 5 }, search);
+        opt.nthreads = 1;
+        const std::string one = pixel_hash(neighborhood_synthesize(sample, opt));
+        for (int threads : { 2, 4 }) {
+            opt.nthreads = threads;
+            EXPECT_EQ(pixel_hash(neighborhood_synthesize(sample, opt)), one)
+                << search_method_name(search) << " at " << threads << " threads";
+        }
+    }
+}
+
 TEST(Neighborhood, RefusesBadSizes)
 {
     const OIIO::ImageBuf sample = crop("rust.png", 40, 40);

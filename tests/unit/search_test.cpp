@@ -9,17 +9,13 @@
 
 #include <gtest/gtest.h>
 
+#include "test_vectors.h"
+
 using namespace texsyn;
 
 namespace {
 
-std::vector<float> random_vectors(size_t count, int dim, uint64_t seed)
-{
-    std::vector<float> v(count * size_t(dim));
-    for (size_t i = 0; i < v.size(); ++i)
-        v[i] = random_uniform(seed, 0, i);
-    return v;
-}
+using test::random_vectors;
 
 // The reference: double-precision distances, lowest index on ties.
 uint32_t brute_force(const VectorSet& set, const float* q)

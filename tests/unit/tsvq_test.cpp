@@ -50,7 +50,7 @@ std::vector<float> clustered(
 }
 
 // The causal n=9 neighbourhood vectors (RGB, dim 120) of a w x h crop of rust.png at (x, y).
-std::vector<float> rust_vectors(int x, int y, int w, int h, VectorSet& set)
+detail::SampleVectors rust_vectors(int x, int y, int w, int h, VectorSet& set)
 {
     static const OIIO::ImageBuf rust = test::linear_sample("rust.png");
     const PlanarImage planes
@@ -58,7 +58,7 @@ std::vector<float> rust_vectors(int x, int y, int w, int h, VectorSet& set)
     const detail::NeighborhoodLayout layout
         = detail::make_layout(9, 5, false, NeighborhoodShape::Causal);
     const detail::CandidateGrid grid = detail::candidate_grid(layout, w, h);
-    std::vector<float> v = detail::sample_vectors(layout, grid, planes.channels, {}, 0);
+    detail::SampleVectors v = detail::sample_vectors(layout, grid, planes.channels, {}, 0);
     set = { v.data(), grid.count(), layout.npixels() * 3 };
     return v;
 }
@@ -108,8 +108,8 @@ TEST(Tsvq, ApproximationImprovesWithCandidates)
     // Set: the neighbourhoods of rust.png's top-left 128x128 (14880 vectors of 120 floats);
     // queries: neighbourhoods of its bottom-right quadrant, which the set does not contain.
     VectorSet set, queries;
-    const std::vector<float> data = rust_vectors(0, 0, 128, 128, set);
-    const std::vector<float> qdata = rust_vectors(128, 128, 128, 128, queries);
+    const detail::SampleVectors data = rust_vectors(0, 0, 128, 128, set);
+    const detail::SampleVectors qdata = rust_vectors(128, 128, 128, 128, queries);
     auto exact = searcher(set, SearchMethod::Exhaustive);
     const std::vector<int> ks = { 1, 2, 4, 8, 16, 64 };
     std::vector<std::unique_ptr<NeighborSearch>> tsvq;
@@ -188,7 +188,7 @@ TEST(Tsvq, MemoryIsAFractionOfTheVectorSet)
     // count / 5.5 nodes of dim floats each, plus a 4-byte index per vector: 0.2x the vector
     // set here (dim 120). Bound: 0.3x.
     VectorSet set;
-    const std::vector<float> data = rust_vectors(0, 0, 128, 128, set);
+    const detail::SampleVectors data = rust_vectors(0, 0, 128, 128, set);
     auto tsvq = searcher(set, SearchMethod::Tsvq, 8);
     const double vector_bytes = double(set.count) * set.dim * sizeof(float);
     EXPECT_LT(double(tsvq->memory_bytes()), 0.3 * vector_bytes);

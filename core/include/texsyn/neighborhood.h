@@ -39,11 +39,22 @@ struct NeighborhoodOptions {
     std::vector<int> n = { 9 };
     int coarse = 5; ///< side (odd) of the square at the next coarser level
     NeighborhoodShape shape = NeighborhoodShape::Causal;
-    SearchMethod search = SearchMethod::KdTree;
-    int candidates = 1; ///< tsvq: leaves visited; kdtree: matches re-ranked (see search.h)
-    int dims = 0;       ///< kdtree: PCA components kept; 0 = 95% of the variance
-    float eps = 0.0f;   ///< kdtree: approximation factor
-    int coherence = 2;  ///< coherent: k of k-coherence
+    /// Coherent by default: it keeps edges and corners (grass blades, mortar lines) that the
+    /// nearest-neighbour back-ends blur (the report's §3.3), matches the sample's histogram
+    /// best, and is the fastest (bench/README.md).
+    SearchMethod search = SearchMethod::Coherent;
+    // Search defaults chosen by measurement (N3: 256x256 -> 512x512, 4 levels, n=9,7,5,5; about
+    // 350,000 scanline-sequential queries, so a few microseconds each): 95% of the variance
+    // takes 40-60 PCA components on real neighbourhoods, where a kd-tree is no faster than
+    // a scan (2 ms a query); 8 components, the 4 best of an approximate (eps=30) reduced
+    // search re-ranked in full, answer in ~3 us within ~19% of the exhaustive mean distance
+    // (eps from 0 to 50 changes it by under 3%). k=1 (Ashikhmin's) keeps stones, flowers and
+    // grass blades whole and is twice as fast as k=2, which blurs them. tsvq: 4 leaves is the
+    // fewest that looked like the exhaustive result on N1.
+    int candidates = 4; ///< tsvq: leaves visited; kdtree: matches re-ranked (see search.h)
+    int dims = 8;       ///< kdtree: PCA components kept; 0 = 95% of the variance
+    float eps = 30.0f;  ///< kdtree: approximation factor
+    int coherence = 1;  ///< coherent: k of k-coherence
     int merge = 0;      ///< coherent: 1 = also ask the kd-tree
     /// 1: after each level's scanline pass, re-synthesize the pixels within n/2 of the
     /// wrap-around seams with full square neighbourhoods (which see both sides), so the

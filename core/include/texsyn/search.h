@@ -45,13 +45,17 @@ enum class SearchMethod {
     /// depend on nthreads. Fails if candidates < 1.
     Tsvq,
     /// Approximate nearest neighbour (nanoflann kd-tree) on PCA-reduced vectors: `dims`
-    /// components kept (0 = enough for 95% of the variance), `eps` the kd-tree's
-    /// approximation (0 = exact in the reduced space); the `candidates` nearest in the
-    /// reduced space are re-ranked with full distances.
+    /// components kept (0 = enough for 95% of the variance; the PCA is fitted on at most
+    /// 4096 evenly spread vectors), `eps` the kd-tree's approximation (0 = exact in the
+    /// reduced space); the `candidates` nearest in the reduced space are re-ranked with
+    /// full distances.
     KdTree,
     /// The hints (the source positions of already synthesized neighbours, shifted) and
-    /// their `coherence` - 1 most similar vectors each (k-coherence), optionally merged
-    /// with the kd-tree's answer (`merge`); the best of them by full distance.
+    /// their `coherence` - 1 most similar vectors each (k-coherence; precomputed for every
+    /// vector by re-ranking the kd-tree's `coherence` - 1 + `candidates` nearest with full
+    /// distances), optionally merged with the kd-tree's answer (`merge`); the best of them
+    /// by full distance. Without hints (or with only invalid ones) it is the kd-tree's
+    /// answer. The kd-tree is KdTree's, with the same dims, eps and candidates.
     Coherent,
 };
 

@@ -9,17 +9,6 @@
 
 namespace texsyn::detail {
 
-namespace {
-
-// i mod n in [0, n) for any i.
-inline int wrap(int i, int n)
-{
-    const int r = i % n;
-    return r < 0 ? r + n : r;
-}
-
-} // namespace
-
 NeighborhoodLayout make_layout(int n, int coarse, bool has_coarser, NeighborhoodShape shape)
 {
     NeighborhoodLayout layout;
@@ -65,16 +54,24 @@ void sample_vector(const NeighborhoodLayout& layout, const std::vector<Plane>& l
     for (const Offset& o : layout.fine)
         for (size_t c = 0; c < nc; ++c)
             *out++ = level[c](x + o.dx, y + o.dy);
-    for (const Offset& o : layout.coarse)
+    if (layout.coarse.empty())
+        return;
+    const int cw = coarser[0].width(), ch = coarser[0].height();
+    for (const Offset& o : layout.coarse) {
+        // Reflection only where the square leaves the coarser level (Plane::at is a call
+        // per value).
+        const int cx = x / 2 + o.dx, cy = y / 2 + o.dy;
+        const bool inside = cx >= 0 && cy >= 0 && cx < cw && cy < ch;
         for (size_t c = 0; c < nc; ++c)
-            *out++ = coarser[c].at(x / 2 + o.dx, y / 2 + o.dy, Boundary::Reflect);
+            *out++ = inside ? coarser[c](cx, cy) : coarser[c].at(cx, cy, Boundary::Reflect);
+    }
 }
 
-std::vector<float> sample_vectors(const NeighborhoodLayout& layout, const CandidateGrid& grid,
+SampleVectors sample_vectors(const NeighborhoodLayout& layout, const CandidateGrid& grid,
     const std::vector<Plane>& level, const std::vector<Plane>& coarser, int nthreads)
 {
     const size_t dim = size_t(layout.npixels()) * level.size();
-    std::vector<float> vectors(grid.count() * dim);
+    SampleVectors vectors(grid.count() * dim);
     OIIO::parallel_for(
         int64_t(0), int64_t(grid.rows),
         [&](int64_t row) {

@@ -34,13 +34,13 @@ const OptionTable<NeighborhoodOptions>& NeighborhoodOptions::table()
             "search back-end: exhaustive (exact), tsvq (tree-structured VQ), kdtree (PCA + "
             "kd-tree), coherent (k-coherence)");
         t.integer("candidates", &O::candidates, 1, 64,
-            "tsvq: leaves visited (backtracking); kdtree: nearest in PCA space re-ranked by full "
-            "distance");
+            "tsvq: leaves visited (backtracking); kdtree and coherent's kd-tree: nearest in PCA "
+            "space re-ranked by full distance");
         t.integer("dims", &O::dims, 0, 4096,
             "kdtree: PCA components kept; 0 = enough for 95% of the variance");
         t.real("eps", &O::eps, 0.0f, 100.0f,
-            "kdtree: approximation factor (a match may be (1+eps) times farther than the "
-            "nearest in PCA space)");
+            "kdtree: approximation factor (a match's squared distance in PCA space may be "
+            "(1+eps) times the nearest's)");
         t.integer("coherence", &O::coherence, 1, 16,
             "coherent: k of k-coherence (each shifted neighbour's source and its k-1 most "
             "similar sample positions)");

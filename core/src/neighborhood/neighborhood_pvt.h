@@ -10,7 +10,18 @@
 #include <texsyn/image.h>
 #include <texsyn/neighborhood.h>
 
+#include "image/huge_pages_pvt.h"
+
 namespace texsyn::detail {
+
+/// i mod n in [0, n) for any i (n >= 1); no division in the common case of i inside.
+inline int wrap(int i, int n)
+{
+    if (i >= 0 && i < n)
+        return i;
+    const int r = i % n;
+    return r < 0 ? r + n : r;
+}
 
 struct Offset {
     int dx = 0;
@@ -57,10 +68,13 @@ CandidateGrid candidate_grid(const NeighborhoodLayout& layout, int width, int he
 void sample_vector(const NeighborhoodLayout& layout, const std::vector<Plane>& level,
     const std::vector<Plane>& coarser, int x, int y, float* out);
 
+/// Sample neighbourhood vectors (tens of MB, filled once): in huge pages where possible.
+using SampleVectors = std::vector<float, HugePageAllocator<float>>;
+
 /// The neighbourhood vectors of every candidate of one sample level, row-major (count x
 /// layout.npixels() * channels): `level` at the candidate, `coarser` (may be empty when the
 /// layout has no coarse part) reflected at its edges around the parent.
-std::vector<float> sample_vectors(const NeighborhoodLayout& layout, const CandidateGrid& grid,
+SampleVectors sample_vectors(const NeighborhoodLayout& layout, const CandidateGrid& grid,
     const std::vector<Plane>& level, const std::vector<Plane>& coarser, int nthreads);
 
 /// One output level being synthesized: its channels and, per pixel, the index of the sample

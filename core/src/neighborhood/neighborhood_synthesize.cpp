@@ -218,7 +218,7 @@ private:
     NeighborhoodLayout m_layout;
     const std::vector<Plane>& m_sample;
     CandidateGrid m_grid;
-    std::vector<float> m_vectors;
+    detail::SampleVectors m_vectors;
     bool m_coherent;
     std::unique_ptr<NeighborSearch> m_search;
 };
