@@ -77,10 +77,10 @@ void register_workloads()
         { "N3_256_to_512_kdtree", 256, 256, 512, 4, { 9, 7, 5, 5 }, S::KdTree, 5 },
         { "N4_256_to_512_coherent", 256, 256, 512, 4, { 9, 7, 5, 5 }, S::Coherent, 5 },
         { "N5_256_to_1024_coherent", 256, 256, 1024, 4, { 9, 7, 5, 5 }, S::Coherent, 5 },
-        { "M_200x300_n25_exhaustive", 200, 300, 64, 1, { 25 }, S::Exhaustive, 1 },
-        { "M_200x300_n25_tsvq", 200, 300, 64, 1, { 25 }, S::Tsvq, 1 },
-        { "M_200x300_n25_kdtree", 200, 300, 64, 1, { 25 }, S::KdTree, 1 },
-        { "M_200x300_n25_coherent", 200, 300, 64, 1, { 25 }, S::Coherent, 1 },
+        { "M_200x300_n25_exhaustive", 200, 300, 64, 1, { 25 }, S::Exhaustive, 2 },
+        { "M_200x300_n25_tsvq", 200, 300, 64, 1, { 25 }, S::Tsvq, 2 },
+        { "M_200x300_n25_kdtree", 200, 300, 64, 1, { 25 }, S::KdTree, 2 },
+        { "M_200x300_n25_coherent", 200, 300, 64, 1, { 25 }, S::Coherent, 2 },
     };
     for (const Workload& w : workloads)
         configure_workload(benchmark::RegisterBenchmark(w.name, run_workload, w), w.repetitions);
