@@ -85,10 +85,12 @@ rm -f "${strip[@]}"
 "$texsyn" --seed 1 "$samples/marble_pink.png" "$samples/stucco_yellow.png" --transfer -o "$out/transfer_marble_stucco.png"
 "$texsyn" --seed 1 "$samples/paper_crinkled.png" "$samples/marble_pink.png" --transfer -o "$out/transfer_paper_marble.png"
 # docs/neighborhood.md: each search back-end on grass and bricks (192x192 from the 256x256
-# samples, seed 1), two-by-two tilings with and without the seam pass, the report's Figure 3
-# (the causal L against the square with noise), and a source map re-applied to a height map.
+# samples, seed 1; each row starts with the sample's top-left 192x192), two-by-two tilings
+# with and without the seam pass, the report's Figure 3 (the causal L against the square
+# with noise), and a source map re-applied to a height map.
 for s in grass bricks; do
-  row=("$samples/$s.png")
+  oiiotool "$samples/$s.png" --cut 192x192+0+0 -o "$out/nb_sample.png" # shown at the same scale
+  row=("$out/nb_sample.png")
   for search in exhaustive tsvq kdtree coherent; do
     "$texsyn" --seed 1 "$samples/$s.png" --neighborhood:size=192x192:search=$search -o "$out/nb_$search.png"
     row+=("$out/nb_$search.png")
