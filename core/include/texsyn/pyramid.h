@@ -86,6 +86,17 @@ std::unique_ptr<Pyramid> make_laplacian_pyramid(
 /// step). `boundary`: Circular for a tiling image, Reflect for a sample.
 Plane reduce_plane(const Plane& image, Boundary boundary, int nthreads = 0);
 
+/// The inverse size change of reduce_plane (Burt & Adelson's expand, Castellanos &
+/// Williams' "project"): `coarse` (ceil(width/2) x ceil(height/2)) upsampled to width x
+/// height with zeros, blurred with the same kernel and normalised by the kernel weight that
+/// fell on the inserted samples.
+Plane expand_plane(const Plane& coarse, int width, int height, Boundary boundary, int nthreads = 0);
+
+/// Gaussian pyramid of every channel: result[l][c], level 0 the channels themselves and
+/// level l + 1 reduce_plane of level l (`nlevels` >= 1 levels).
+std::vector<std::vector<Plane>> gaussian_pyramid(
+    const std::vector<Plane>& channels, int nlevels, Boundary boundary, int nthreads = 0);
+
 /// Steerable pyramid, Fourier-domain and self-inverting (a tight frame): high-pass
 /// residual, `scales` levels of `orientations` (1..8) oriented bands, low-pass residual.
 /// Only the low-pass is subsampled: the bands of scale s are ceil(width/2^s) x

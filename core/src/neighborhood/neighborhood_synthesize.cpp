@@ -9,6 +9,7 @@
 #include <texsyn/synthesis.h>
 
 #include "neighborhood_pvt.h"
+#include "source_map_pvt.h"
 #include "synthesis/synthesis_pvt.h"
 
 namespace texsyn {
@@ -21,18 +22,6 @@ using detail::NeighborhoodLayout;
 std::string size_text(int w, int h)
 {
     return std::to_string(w) + "x" + std::to_string(h);
-}
-
-// Gaussian pyramid of every channel: levels[l][c], level 0 the image itself.
-std::vector<std::vector<Plane>> gaussian_levels(
-    const std::vector<Plane>& image, int nlevels, Boundary boundary, int nthreads)
-{
-    std::vector<std::vector<Plane>> levels(static_cast<size_t>(nlevels));
-    levels[0] = image;
-    for (int l = 1; l < nlevels; ++l)
-        for (const Plane& p : levels[size_t(l - 1)])
-            levels[size_t(l)].push_back(reduce_plane(p, boundary, nthreads));
-    return levels;
 }
 
 int halved(int n, int times)
@@ -264,22 +253,6 @@ bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
     return true;
 }
 
-// The source map of the finest level: x and y of each pixel's sample position.
-void write_source_map(OIIO::ImageBuf& map, const OutputLevel& out, int sw, int sh)
-{
-    const int w = out.width(), h = out.height();
-    PlanarImage m;
-    m.channels = { Plane(w, h), Plane(w, h) };
-    m.channel_names = { "x", "y" };
-    for (size_t i = 0; i < out.live.source.size(); ++i) {
-        m.channels[0].data()[i] = float(out.live.source[i] % uint32_t(sw));
-        m.channels[1].data()[i] = float(out.live.source[i] / uint32_t(sw));
-    }
-    imagebuf_from_planes(m, map, false);
-    map.specmod().erase_attribute("oiio:UnassociatedAlpha");
-    map.specmod().attribute("synth:sample_size", size_text(sw, sh));
-}
-
 bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const NeighborhoodOptions& opt,
     OIIO::ImageBuf* source_map)
 {
@@ -307,7 +280,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Neighbo
     }
 
     const auto sample_levels
-        = gaussian_levels(in.channels, opt.levels, Boundary::Reflect, opt.nthreads);
+        = gaussian_pyramid(in.channels, opt.levels, Boundary::Reflect, opt.nthreads);
     size_t total = 0, done = 0;
     for (int l = 0; l < opt.levels; ++l) {
         const int lw = halved(w, l), lh = halved(h, l);
@@ -346,7 +319,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Neighbo
     };
     tag(dst.specmod());
     if (source_map) {
-        write_source_map(*source_map, coarser, sw, sh);
+        detail::write_source_map(*source_map, coarser.live.source, w, h, sw, sw, sh);
         tag(source_map->specmod());
     }
     return true;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // apply_source_map: one synthesis drives every map of a material.
+#include <texsyn/image.h>
 #include <texsyn/neighborhood.h>
 
 #include <cmath>
@@ -7,6 +8,7 @@
 
 #include <OpenImageIO/imagebufalgo.h>
 
+#include "source_map_pvt.h"
 #include "synthesis/synthesis_pvt.h"
 
 namespace texsyn {
@@ -88,6 +90,26 @@ bool apply(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf&
 }
 
 } // namespace
+
+namespace detail {
+
+void write_source_map(OIIO::ImageBuf& map, const std::vector<uint32_t>& source, int width,
+    int height, int source_width, int sample_width, int sample_height)
+{
+    PlanarImage m;
+    m.channels = { Plane(width, height), Plane(width, height) };
+    m.channel_names = { "x", "y" };
+    for (size_t i = 0; i < source.size(); ++i) {
+        m.channels[0].data()[i] = float(source[i] % uint32_t(source_width));
+        m.channels[1].data()[i] = float(source[i] / uint32_t(source_width));
+    }
+    imagebuf_from_planes(m, map, false);
+    map.specmod().erase_attribute("oiio:UnassociatedAlpha");
+    map.specmod().attribute(
+        "synth:sample_size", std::to_string(sample_width) + "x" + std::to_string(sample_height));
+}
+
+} // namespace detail
 
 bool apply_source_map(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf& image)
 {

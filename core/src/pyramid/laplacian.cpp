@@ -97,6 +97,24 @@ Plane reduce_plane(const Plane& image, Boundary boundary, int nthreads)
     return out;
 }
 
+Plane expand_plane(const Plane& coarse, int width, int height, Boundary boundary, int nthreads)
+{
+    Plane out;
+    resample(coarse, expand_taps(width, boundary), expand_taps(height, boundary), out, nthreads);
+    return out;
+}
+
+std::vector<std::vector<Plane>> gaussian_pyramid(
+    const std::vector<Plane>& channels, int nlevels, Boundary boundary, int nthreads)
+{
+    std::vector<std::vector<Plane>> levels(size_t(std::max(nlevels, 1)));
+    levels[0] = channels;
+    for (size_t l = 1; l < levels.size(); ++l)
+        for (const Plane& p : levels[l - 1])
+            levels[l].push_back(reduce_plane(p, boundary, nthreads));
+    return levels;
+}
+
 std::unique_ptr<Pyramid> make_laplacian_pyramid(
     int width, int height, int scales, Boundary boundary)
 {

@@ -8,8 +8,7 @@
 
 #include "distance_pvt.h"
 
-// Only this file includes nanoflann.
-#include <nanoflann.hpp>
+#include "nanoflann_adaptor_pvt.h"
 
 namespace texsyn::detail {
 
@@ -18,52 +17,6 @@ namespace {
 // Vectors projected per task: fixed, so the work split never depends on the thread count
 // (not that it could change a result: each projection is computed alone).
 constexpr size_t kProjectBlock = 1024;
-
-// Points per kd-tree leaf (nanoflann's default is 10).
-constexpr size_t kLeafSize = 10;
-
-// nanoflann's dataset concept over the row-major projections.
-struct ReducedPoints {
-    const float* data = nullptr;
-    size_t count = 0;
-    int dim = 0;
-
-    size_t kdtree_get_point_count() const { return count; }
-    float kdtree_get_pt(uint32_t i, int32_t d) const
-    {
-        return data[size_t(i) * size_t(dim) + size_t(d)];
-    }
-    template <class BoundingBox>
-    bool kdtree_get_bbox(BoundingBox&) const
-    {
-        return false;
-    }
-};
-
-// nanoflann's distance concept: squared L2 with the kernel every back-end uses.
-struct ReducedMetric {
-    using ElementType = float;
-    using DistanceType = float;
-
-    const ReducedPoints& points;
-
-    explicit ReducedMetric(const ReducedPoints& p)
-        : points(p)
-    { }
-
-    float evalMetric(const float* a, uint32_t b, size_t size) const
-    {
-        return distance2(a, points.data + size_t(b) * size_t(points.dim), int(size));
-    }
-    template <typename U, typename V>
-    float accum_dist(U a, V b, size_t) const
-    {
-        return (a - b) * (a - b);
-    }
-};
-
-using NanoflannTree
-    = nanoflann::KDTreeSingleIndexAdaptor<ReducedMetric, ReducedPoints, -1, uint32_t>;
 
 } // namespace
 

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: Apache-2.0
+// Choosy sampling's options: table, validation, memory estimate.
+#include <texsyn/choosy.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "choosy_pvt.h"
+
+namespace texsyn {
+
+namespace {
+constexpr int kMaxSide = 65536; // per side of the output; memory refuses far less anyway
+constexpr int kMaxLevels = 8;
+constexpr int kMaxIterations = 64;
+constexpr float kMaxPenalty = 16.0f;
+} // namespace
+
+const OptionTable<ChoosyOptions>& ChoosyOptions::table()
+{
+    using O = ChoosyOptions;
+    static const OptionTable<O> t = [] {
+        OptionTable<O> t;
+        t.size("size", &O::width, &O::height, kMaxSide, "the sample's size",
+            "output size WxH, each side a multiple of 2^(levels-1) (default: the sample's size, "
+            "cropped to one)");
+        t.integer("levels", &O::levels, 1, kMaxLevels,
+            "Gaussian/Laplacian pyramid levels, synthesized coarse to fine");
+        t.integers("iterations", &O::iterations, 1, kMaxIterations, kMaxLevels,
+            "choosy passes per level, finest first (one value = every level; coarser levels "
+            "missing from the list repeat the last: 1,8 is the paper's Fig. 10(c))");
+        t.real("penalty", &O::penalty, 0.0f, kMaxPenalty,
+            "a sample neighbourhood used c times scores distance x 2^(penalty (c - c_min)): "
+            "1 = choosy sampling, 0 = greedy best match (Wei & Levoy's selection)");
+        t.integer("isotropic", &O::isotropic, 0, 1,
+            "1 = also match the sample rotated and mirrored (8 orientations): isotropic "
+            "variants of anisotropic samples; 0 = keep the sample's orientation");
+        t.choice("search", &O::search,
+            { { "exhaustive", ChoosySearch::Exhaustive }, { "kdtree", ChoosySearch::KdTree } },
+            "exhaustive (every neighbourhood, full dimension, exact) or kdtree (principal "
+            "components in a set of dynamic kd-trees, one per use count)");
+        t.integer("dims", &O::dims, 1, 4096,
+            "kdtree: principal components kept (24 x channels or more = all: exact)");
+        t.real("eps", &O::eps, 0.0f, 100.0f,
+            "kdtree: approximation factor (a match's squared distance in PCA space may be "
+            "(1+eps) times the nearest's; 0 = exact)");
+        return t;
+    }();
+    return t;
+}
+
+bool ChoosyOptions::validate(std::string& error) const
+{
+    const bool zero = width == 0 && height == 0;
+    if (!zero && (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)) {
+        error = "size=" + std::to_string(width) + "x" + std::to_string(height)
+            + " is out of range (each side 1.." + std::to_string(kMaxSide) + ")";
+        return false;
+    }
+    if (levels < 1 || levels > kMaxLevels) {
+        error = "levels=" + std::to_string(levels) + " is out of range (1.."
+            + std::to_string(kMaxLevels) + ")";
+        return false;
+    }
+    if (iterations.empty() || int(iterations.size()) > levels) {
+        error = "iterations=" + format_int_list(iterations) + " has "
+            + std::to_string(iterations.size()) + " values for levels=" + std::to_string(levels)
+            + " (give 1.." + std::to_string(levels) + ")";
+        return false;
+    }
+    for (int v : iterations)
+        if (v < 1 || v > kMaxIterations) {
+            error = "iterations=" + format_int_list(iterations) + ": " + std::to_string(v)
+                + " is out of range (1.." + std::to_string(kMaxIterations) + ")";
+            return false;
+        }
+    if (!(penalty >= 0.0f && penalty <= kMaxPenalty) || (isotropic != 0 && isotropic != 1)
+        || dims < 1 || !(eps >= 0.0f && eps <= 100.0f)) {
+        error = "penalty, isotropic, dims or eps is out of range (see --help)";
+        return false;
+    }
+    return true;
+}
+
+int ChoosyOptions::iterations_at(int level) const
+{
+    if (iterations.empty())
+        return 1;
+    return iterations[size_t(std::min<int>(level, int(iterations.size()) - 1))];
+}
+
+size_t choosy_memory_estimate(int sample_width, int sample_height, int nchannels, int out_width,
+    int out_height, const ChoosyOptions& opt)
+{
+    // The finest level dominates: its points (every orientation) in full dimension for the
+    // exhaustive search, or projected (and copied once more into the trees) for the
+    // kd-trees; plus the output's planes (Gaussian, Laplacian children, next level's start,
+    // source: ~ (3 channels + 1) values per output pixel at the finest level, 4/3 of it over
+    // all levels) and the sample's two pyramids.
+    const double orientations = opt.isotropic ? 8.0 : 1.0;
+    const double points = double(sample_width) * double(sample_height) * orientations;
+    const double dim = double(detail::ring_slots().size()) * double(nchannels);
+    const double per_point = opt.search == ChoosySearch::Exhaustive
+        ? dim
+        : 2.0 * std::min(dim, double(opt.dims)) + 2.0;
+    const double out = double(out_width) * double(out_height) * 4.0 / 3.0 * (3.0 * nchannels + 1.0);
+    const double sample = double(sample_width) * double(sample_height) * 8.0 / 3.0 * nchannels;
+    const double bytes = 4.0 * (points * per_point + out + sample);
+    return bytes > 1e18 ? size_t(1e18) : size_t(bytes);
+}
+
+} // namespace texsyn

@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: Apache-2.0
+// Castellanos & Williams Algorithm 1 on the pixel grid (choosy.h).
+#include <texsyn/choosy.h>
+
+#include <algorithm>
+
+#include <texsyn/random.h>
+#include <texsyn/synthesis.h>
+
+#include "choosy_pvt.h"
+#include "neighborhood/source_map_pvt.h"
+#include "synthesis/synthesis_pvt.h"
+
+namespace texsyn {
+
+namespace {
+
+using detail::GridLevel;
+
+// A level must hold the 5x5 neighbourhood (a sample level at least one of them).
+constexpr int kMinLevelSide = 5;
+
+std::string size_text(int w, int h)
+{
+    return std::to_string(w) + "x" + std::to_string(h);
+}
+
+// The most levels (<= wanted) whose coarsest level of a w x h image is at least 5x5.
+int levels_allowed(int w, int h, int wanted)
+{
+    int l = 0;
+    while (l < wanted && (w >> l) >= kMinLevelSide && (h >> l) >= kMinLevelSide)
+        ++l;
+    return l;
+}
+
+bool check_sizes(int sw, int sh, int w, int h, const ChoosyOptions& opt, std::string& error)
+{
+    const int unit = 1 << (opt.levels - 1);
+    const int allowed = levels_allowed(sw, sh, opt.levels);
+    if (allowed == 0) {
+        error = "the sample (" + size_text(sw, sh) + ") is smaller than the 5x5 neighbourhood";
+        return false;
+    }
+    if (allowed < opt.levels) {
+        error = "levels=" + std::to_string(opt.levels) + " is too many for the sample ("
+            + size_text(sw, sh) + "): its coarsest level would be smaller than the 5x5 "
+            + "neighbourhood (use levels=" + std::to_string(allowed) + " or less)";
+        return false;
+    }
+    if (w % unit != 0 || h % unit != 0) {
+        auto nearest = [unit](int v) { return std::max(unit, (v + unit / 2) / unit * unit); };
+        error = "size=" + size_text(w, h) + ": each side must be a multiple of "
+            + std::to_string(unit) + " (2^(levels-1)) for levels=" + std::to_string(opt.levels)
+            + "; the nearest is " + size_text(nearest(w), nearest(h));
+        return false;
+    }
+    if (w / unit < kMinLevelSide || h / unit < kMinLevelSide) {
+        error = "size=" + size_text(w, h) + " is too small for levels=" + std::to_string(opt.levels)
+            + ": the coarsest output level would be " + size_text(w / unit, h / unit)
+            + ", smaller than the 5x5 neighbourhood";
+        return false;
+    }
+    return true;
+}
+
+// The top-left part of every plane whose sides are multiples of `unit`.
+std::vector<Plane> crop_to_multiple(const std::vector<Plane>& planes, int unit)
+{
+    const int w = planes[0].width() / unit * unit, h = planes[0].height() / unit * unit;
+    if (w == planes[0].width() && h == planes[0].height())
+        return planes;
+    std::vector<Plane> out;
+    for (const Plane& p : planes) {
+        Plane c(w, h);
+        for (int y = 0; y < h; ++y)
+            std::copy_n(p.row(y), w, c.row(y));
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+// An output level of w x h with room for its Laplacian children (below the finest).
+GridLevel empty_level(int w, int h, size_t nchannels, bool finest)
+{
+    GridLevel out;
+    out.gaussian.assign(nchannels, Plane(w, h));
+    if (!finest)
+        out.children.assign(nchannels, Plane(2 * w, 2 * h));
+    out.source.assign(size_t(w) * size_t(h), 0);
+    return out;
+}
+
+// G_0 of Algorithm 1: each pixel a seeded random pixel of the coarsest sample level.
+void random_start(GridLevel& out, const std::vector<Plane>& sample, uint64_t seed)
+{
+    const uint64_t npixels = uint64_t(sample[0].width()) * uint64_t(sample[0].height());
+    for (size_t i = 0; i < out.source.size(); ++i) {
+        const uint64_t r = random_bits(seed, 0x43570000, i) >> 32;
+        out.source[i] = uint32_t((r * npixels) >> 32);
+        for (size_t ch = 0; ch < sample.size(); ++ch)
+            out.gaussian[ch].data()[i] = sample[ch].data()[out.source[i]];
+    }
+}
+
+std::unique_ptr<detail::ChoiceIndex> make_index(
+    const detail::AnalysisPoints& points, const ChoosyOptions& opt)
+{
+    if (opt.search == ChoosySearch::Exhaustive)
+        return detail::make_exhaustive_choice(points, opt.penalty, opt.nthreads);
+    return detail::make_kdtree_choice(points, opt.penalty, opt.dims, opt.eps, opt.nthreads);
+}
+
+bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyOptions& opt,
+    OIIO::ImageBuf* source_map)
+{
+    std::string error;
+    if (!opt.validate(error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+    if (sample.has_error()) {
+        dst.errorfmt("sample: {}", sample.geterror());
+        return false;
+    }
+    PlanarImage in;
+    if (!planes_from_imagebuf(sample, in, error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+    const int unit = 1 << (opt.levels - 1);
+    const int sw = in.width(), sh = in.height();
+    const int cw = std::max(sw / unit * unit, 1), chh = std::max(sh / unit * unit, 1);
+    const int w = opt.width ? opt.width : cw, h = opt.height ? opt.height : chh;
+    if (!check_sizes(sw / unit * unit, sh / unit * unit, w, h, opt, error)
+        || !detail::check_memory(choosy_memory_estimate(cw, chh, in.nchannels(), w, h, opt),
+            "size=" + size_text(w, h), error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+
+    const detail::ChoosyAnalysis analysis
+        = detail::analyze_choosy(crop_to_multiple(in.channels, unit), opt.levels, opt.nthreads);
+    const int orientations = opt.isotropic ? 8 : 1;
+    size_t total = 0, done = 0;
+    for (int l = 0; l < opt.levels; ++l)
+        total += size_t(opt.iterations_at(l)) * size_t(w >> l) * size_t(h >> l);
+    const int top = opt.levels - 1;
+    GridLevel out = empty_level(w >> top, h >> top, in.nchannels(), top == 0);
+    random_start(out, analysis.gaussian[size_t(top)], opt.seed);
+    static const std::vector<Plane> none;
+    for (int l = top; l >= 0; --l) {
+        const std::vector<Plane>& gaussian = analysis.gaussian[size_t(l)];
+        const std::vector<Plane>& children = l > 0 ? analysis.laplacian[size_t(l - 1)] : none;
+        {
+            const detail::AnalysisPoints points = detail::grid_points(gaussian, orientations);
+            auto index = make_index(points, opt);
+            auto target = detail::make_grid_target(out, gaussian, children, orientations);
+            for (int it = 0; it < opt.iterations_at(l); ++it) {
+                detail::PassSettings pass;
+                pass.seed = opt.seed;
+                pass.stream = 0x43530000 + uint64_t(l) * 256 + uint64_t(it);
+                pass.nthreads = opt.nthreads;
+                pass.visited = [&](size_t n) {
+                    done += n;
+                    if (opt.progress)
+                        opt.progress(float(double(done) / double(total)));
+                };
+                detail::choosy_pass(*target, *index, pass);
+            }
+        }
+        if (l > 0) {
+            GridLevel next = empty_level(w >> (l - 1), h >> (l - 1), in.nchannels(), l == 1);
+            next.gaussian = detail::invert_level(
+                out.children, out.gaussian, Boundary::Circular, opt.nthreads);
+            out = std::move(next);
+        }
+    }
+
+    const bool unassociated = sample.spec().get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
+    PlanarImage result;
+    result.channels = out.gaussian;
+    result.channel_names = in.channel_names;
+    result.alpha_channel = in.alpha_channel;
+    imagebuf_from_planes(result, dst, !unassociated);
+    ChoosyOptions resolved = opt;
+    resolved.width = w;
+    resolved.height = h;
+    auto tag = [&](OIIO::ImageSpec& spec) {
+        spec.attribute("synth:version", version());
+        spec.attribute("synth:method", "choosy");
+        spec.attribute("synth:seed", int(opt.seed));
+        spec.attribute("synth:options", ChoosyOptions::table().format(resolved));
+    };
+    tag(dst.specmod());
+    if (source_map) {
+        detail::write_source_map(*source_map, out.source, w, h, cw, sw, sh);
+        tag(source_map->specmod());
+    }
+    return true;
+}
+
+} // namespace
+
+bool choosy_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyOptions& opt,
+    OIIO::ImageBuf* source_map)
+{
+    return detail::guarded(
+        dst, "choosy_synthesize", [&] { return synthesize(dst, sample, opt, source_map); });
+}
+
+OIIO::ImageBuf choosy_synthesize(
+    const OIIO::ImageBuf& sample, const ChoosyOptions& opt, OIIO::ImageBuf* source_map)
+{
+    return detail::value_form("choosy_synthesize",
+        [&](OIIO::ImageBuf& dst) { return choosy_synthesize(dst, sample, opt, source_map); });
+}
+
+} // namespace texsyn
