@@ -11,20 +11,19 @@
 
 #include <gtest/gtest.h>
 
+#include "test_metrics.h"
 #include "test_samples.h"
 
 using namespace texsyn;
 
 namespace {
 
+using test::linear_crop;
 using test::linear_sample;
+using test::pixel_hash;
 using test::planes_of;
-
-// The top-left w x h of a bundled sample.
-OIIO::ImageBuf crop(const std::string& name, int w, int h)
-{
-    return OIIO::ImageBufAlgo::cut(linear_sample(name), OIIO::ROI(0, w, 0, h));
-}
+using test::seam_ratio;
+using test::worst_w1;
 
 NeighborhoodOptions options(
     int w, int h, int levels, std::vector<int> n, SearchMethod search = SearchMethod::Exhaustive)
@@ -39,52 +38,11 @@ NeighborhoodOptions options(
     return opt;
 }
 
-std::string pixel_hash(const OIIO::ImageBuf& buf)
-{
-    std::vector<float> px(size_t(buf.spec().image_pixels()) * size_t(buf.nchannels()));
-    buf.get_pixels(buf.roi(), OIIO::TypeFloat, px.data());
-    return OIIO::Strutil::fmt::format("{:016x}",
-        OIIO::Strutil::strhash(
-            std::string_view(reinterpret_cast<const char*>(px.data()), px.size() * sizeof(float))));
-}
-
-// The largest per-channel 1-D Wasserstein distance between the pixel histograms of a and b.
-double worst_w1(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b)
-{
-    const PlanarImage pa = planes_of(a), pb = planes_of(b);
-    double worst = 0;
-    for (size_t c = 0; c < pa.channels.size(); ++c)
-        worst = std::max(
-            worst, wasserstein1(QuantileTable(pa.channels[c]), QuantileTable(pb.channels[c])));
-    return worst;
-}
-
-// Mean absolute difference across the wrap-around seam (last column to first, last row to
-// first) over the mean difference between interior neighbours: ~1 for a seamless tile.
-double seam_ratio(const OIIO::ImageBuf& buf)
-{
-    const PlanarImage p = planes_of(buf);
-    const int w = p.width(), h = p.height();
-    double seam = 0, inner = 0;
-    size_t nseam = 0, ninner = 0;
-    for (const Plane& c : p.channels)
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                const double dx = std::abs(c((x + 1) % w, y) - c(x, y));
-                const double dy = std::abs(c(x, (y + 1) % h) - c(x, y));
-                (x == w - 1 ? seam : inner) += dx;
-                (y == h - 1 ? seam : inner) += dy;
-                (x == w - 1 ? nseam : ninner) += 1;
-                (y == h - 1 ? nseam : ninner) += 1;
-            }
-    return (seam / double(nseam)) / (inner / double(ninner));
-}
-
 } // namespace
 
 TEST(Neighborhood, EveryPixelIsASamplePixelAndTheMapSaysWhich)
 {
-    const OIIO::ImageBuf sample = crop("rust.png", 40, 40);
+    const OIIO::ImageBuf sample = linear_crop("rust.png", 40, 40);
     OIIO::ImageBuf map;
     const OIIO::ImageBuf out = neighborhood_synthesize(sample, options(48, 40, 1, { 7 }), &map);
     ASSERT_FALSE(out.has_error()) << out.geterror();
@@ -108,7 +66,7 @@ TEST(Neighborhood, EveryPixelIsASamplePixelAndTheMapSaysWhich)
 
 TEST(Neighborhood, ResultIgnoresThreadCount)
 {
-    const OIIO::ImageBuf sample = crop("stucco_yellow.png", 64, 64);
+    const OIIO::ImageBuf sample = linear_crop("stucco_yellow.png", 64, 64);
     NeighborhoodOptions opt = options(80, 80, 2, { 7, 5 });
     opt.nthreads = 1;
     const std::string one = pixel_hash(neighborhood_synthesize(sample, opt));
@@ -122,7 +80,7 @@ TEST(Neighborhood, ResultIgnoresThreadCount)
 // every back-end.
 TEST(Neighborhood, EveryBackEndIgnoresThreadCount)
 {
-    const OIIO::ImageBuf sample = crop("grass.png", 96, 96);
+    const OIIO::ImageBuf sample = linear_crop("grass.png", 96, 96);
     for (SearchMethod search :
         { SearchMethod::Tsvq, SearchMethod::KdTree, SearchMethod::Coherent }) {
         NeighborhoodOptions opt = options(128, 96, 3, { 9, 7, 5 }, search);
@@ -138,7 +96,7 @@ TEST(Neighborhood, EveryBackEndIgnoresThreadCount)
 
 TEST(Neighborhood, RefusesBadSizes)
 {
-    const OIIO::ImageBuf sample = crop("rust.png", 40, 40);
+    const OIIO::ImageBuf sample = linear_crop("rust.png", 40, 40);
     auto error_of = [&](const NeighborhoodOptions& opt) {
         OIIO::ImageBuf dst;
         EXPECT_FALSE(neighborhood_synthesize(dst, sample, opt));
@@ -153,11 +111,11 @@ TEST(Neighborhood, RefusesBadSizes)
 
 TEST(Neighborhood, SourceMapChecksItsInput)
 {
-    const OIIO::ImageBuf sample = crop("rust.png", 40, 40);
+    const OIIO::ImageBuf sample = linear_crop("rust.png", 40, 40);
     OIIO::ImageBuf map;
     ASSERT_FALSE(neighborhood_synthesize(sample, options(40, 40, 1, { 5 }), &map).has_error());
     OIIO::ImageBuf dst;
-    EXPECT_FALSE(apply_source_map(dst, map, crop("rust.png", 30, 40)));
+    EXPECT_FALSE(apply_source_map(dst, map, linear_crop("rust.png", 30, 40)));
     EXPECT_NE(dst.geterror().find("made from a 40x40 sample"), std::string::npos) << dst.geterror();
     OIIO::ImageBuf bad;
     bad.copy(map);
@@ -176,7 +134,7 @@ TEST(NeighborhoodQuality, HistogramsMatchAndTheOutputTiles)
 {
     for (const char* name :
         { "stucco_yellow.png", "marble_pink.png", "rust.png", "grass.png", "bricks.png" }) {
-        const OIIO::ImageBuf sample = crop(name, 128, 128);
+        const OIIO::ImageBuf sample = linear_crop(name, 128, 128);
         NeighborhoodOptions opt;
         opt.width = opt.height = 192;
         opt.seed = 3;
@@ -193,7 +151,7 @@ TEST(NeighborhoodQuality, HistogramsMatchAndTheOutputTiles)
 // seam on a structured sample; the seam band pass (tile=1, the default) removes it.
 TEST(NeighborhoodQuality, TheSeamPassMakesAStructuredSampleTile)
 {
-    const OIIO::ImageBuf sample = crop("bricks.png", 128, 128);
+    const OIIO::ImageBuf sample = linear_crop("bricks.png", 128, 128);
     NeighborhoodOptions opt = options(128, 128, 3, { 7 });
     opt.tile = 0;
     const double single_pass = seam_ratio(neighborhood_synthesize(sample, opt));
@@ -209,7 +167,7 @@ TEST(NeighborhoodQuality, TheSeamPassMakesAStructuredSampleTile)
 TEST(NeighborhoodQuality, TheCausalShapeBeatsTheSquareWithNoise)
 {
     for (const char* name : { "stucco_yellow.png", "grass.png" }) {
-        const OIIO::ImageBuf sample = crop(name, 64, 64);
+        const OIIO::ImageBuf sample = linear_crop(name, 64, 64);
         NeighborhoodOptions opt = options(96, 96, 1, { 7 });
         const double causal = worst_w1(neighborhood_synthesize(sample, opt), sample);
         opt.shape = NeighborhoodShape::Square;

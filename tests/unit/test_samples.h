@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include <OpenImageIO/imagebufalgo.h>
+
 #include <gtest/gtest.h>
 
 #include <texsyn/color.h>
@@ -27,6 +29,12 @@ inline OIIO::ImageBuf linear_sample(const std::string& name)
     OIIO::ImageBuf buf;
     imagebuf_from_planes(planes, buf);
     return buf;
+}
+
+/// The top-left w x h of linear_sample(name).
+inline OIIO::ImageBuf linear_crop(const std::string& name, int w, int h)
+{
+    return OIIO::ImageBufAlgo::cut(linear_sample(name), OIIO::ROI(0, w, 0, h));
 }
 
 /// The planes of an image (test fails on error).

@@ -45,6 +45,7 @@ void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& s
     const std::vector<size_t> order = visiting_order(n, settings.seed, settings.stream);
     std::vector<float> queries(round * dim);
     std::vector<uint32_t> choices(round);
+    std::vector<uint32_t> hints(round * target.max_neighbors());
     // The round in which each output site was last written and each sample site chosen.
     std::vector<uint32_t> site_round(n, kNever);
     std::vector<uint32_t> sample_round(index.counts().sites(), kNever);
@@ -56,9 +57,11 @@ void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& s
         OIIO::parallel_for(
             int64_t(0), int64_t(m),
             [&](int64_t i) {
+                const size_t site = order[start + size_t(i)];
                 float* q = queries.data() + size_t(i) * dim;
-                target.query(order[start + size_t(i)], q);
-                choices[size_t(i)] = index.choose(q);
+                uint32_t* h = hints.data() + size_t(i) * target.max_neighbors();
+                target.query(site, q);
+                choices[size_t(i)] = index.choose(q, h, target.hints(site, h));
             },
             OIIO::paropt(settings.nthreads).minitems(1));
         for (size_t i = 0; i < m; ++i) {
@@ -71,14 +74,16 @@ void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& s
                 stale = site_round[neighbors[j]] == r;
             if (stale) {
                 float* q = queries.data() + i * dim;
+                uint32_t* h = hints.data() + i * target.max_neighbors();
                 target.query(site, q);
-                choices[i] = index.choose(q);
+                choices[i] = index.choose(q, h, target.hints(site, h));
             }
             target.apply(site, choices[i]);
             index.record(choices[i]);
             site_round[site] = r;
             sample_round[index.site_of(choices[i])] = r;
         }
+        index.settle();
         if (settings.visited)
             settings.visited(m);
     }

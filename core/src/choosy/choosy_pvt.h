@@ -43,6 +43,8 @@ public:
         const size_t d = c - m_min;
         return d < m_factors.size() ? m_factors[d] : m_factors.back();
     }
+    /// factor(min() + d) for d < factors().size() (later ones repeat the last).
+    const std::vector<float>& factors() const { return m_factors; }
 
 private:
     std::vector<uint32_t> m_counts;
@@ -72,12 +74,18 @@ public:
     virtual ~ChoiceIndex() = default;
     /// The sample site of point `point`.
     size_t site_of(uint32_t point) const { return point / m_orientations; }
-    /// The best point for `query` (a weighted neighbourhood of dim floats).
-    virtual uint32_t choose(const float* query) const = 0;
+    /// The best point for `query` (a weighted neighbourhood of dim floats). `hints` (nhints
+    /// points) are likely good choices the caller suggests (k-coherence): they are scored
+    /// first, so that their best score bounds the search. They never change the answer of
+    /// an exact search.
+    virtual uint32_t choose(const float* query, const uint32_t* hints, size_t nhints) const = 0;
     /// One more use of the site of point `point`.
     virtual void record(uint32_t point) = 0;
     /// Every use count back to 0 (a new pass).
     virtual void reset() = 0;
+    /// The end of a round of records: deferred work (moving points between trees) is done.
+    /// choose() is exact at any time; this keeps it fast.
+    virtual void settle() { }
     virtual const UseCounts& counts() const = 0;
 
 protected:
@@ -110,6 +118,10 @@ public:
     /// The sites query(site) reads (at most max_neighbors()), into `out`; returns how many.
     virtual size_t neighbors(size_t site, size_t* out) const = 0;
     virtual size_t max_neighbors() const = 0;
+    /// Points that would continue the choices of the site's neighbours (Ashikhmin's
+    /// coherence: each neighbour's point shifted back by its offset, in its orientation),
+    /// at most max_neighbors(), into `out`; returns how many. Safe to call concurrently.
+    virtual size_t hints(size_t site, uint32_t* out) const = 0;
     /// `site` takes the value of `point` (and its children).
     virtual void apply(size_t site, uint32_t point) = 0;
 };
@@ -172,10 +184,14 @@ std::vector<Plane> invert_level(const std::vector<Plane>& laplacian,
 /// and, below the finest, the Laplacian level under it (`children`, 2x the size) that
 /// choices fill; `source` holds per pixel the sample pixel (index y * width + x at this
 /// level) it copied.
+/// GridLevel::orientation of a pixel no pass of its level has chosen yet.
+constexpr uint8_t kNotChosen = 255;
+
 struct GridLevel {
     std::vector<Plane> gaussian;
     std::vector<Plane> children; ///< empty at the finest level
     std::vector<uint32_t> source;
+    std::vector<uint8_t> orientation; ///< of each choice; kNotChosen before the first
     int width() const { return gaussian[0].width(); }
     int height() const { return gaussian[0].height(); }
 };
@@ -190,6 +206,13 @@ struct GridCandidates {
     }
     int x(size_t c) const { return 2 + int(c % size_t(width - 4)); }
     int y(size_t c) const { return 2 + int(c / size_t(width - 4)); }
+    /// The candidate at (x, y), or -1 if (x, y) is not one.
+    int64_t index(int x, int y) const
+    {
+        if (x < 2 || y < 2 || x >= width - 2 || y >= height - 2)
+            return -1;
+        return int64_t(y - 2) * (width - 4) + (x - 2);
+    }
 };
 
 /// The points of sample level `gaussian` (every channel) in `orientations` (1 or 8).

@@ -88,6 +88,7 @@ GridLevel empty_level(int w, int h, size_t nchannels, bool finest)
     if (!finest)
         out.children.assign(nchannels, Plane(2 * w, 2 * h));
     out.source.assign(size_t(w) * size_t(h), 0);
+    out.orientation.assign(out.source.size(), detail::kNotChosen);
     return out;
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// A kd-tree that points enter and leave one at a time: one tree of the set of dynamic
-// kd-trees of Castellanos & Williams §6.4 (kdtree_choice.cpp). nanoflann stays inside
+// A kd-tree that points enter and leave: one tree of the set of dynamic kd-trees of
+// Castellanos & Williams §6.4 (kdtree_choice.cpp). nanoflann stays inside
 // dynamic_kdtree.cpp.
 #pragma once
 
@@ -11,23 +11,40 @@
 
 namespace texsyn::detail {
 
-/// Which points a tree still holds: p is live iff keys[p / per_site] == key (every point is
-/// live when keys is null). A tree never checks this itself on removal: the owner changes
-/// the keys and calls removed().
+/// Which points a tree holds: p is live iff home[p / per_site] == key (every point is live
+/// when home is null). A tree never checks this on removal: the owner changes home and calls
+/// removed().
 struct LiveTest {
-    const uint32_t* keys = nullptr;
+    const uint32_t* home = nullptr;
     uint32_t key = 0;
     uint32_t per_site = 1;
-    bool operator()(uint32_t p) const { return !keys || keys[p / per_site] == key; }
+    bool operator()(uint32_t p) const { return !home || home[p / per_site] == key; }
+};
+
+/// The factor on a point's squared distance: factors[min(count[site] - min, n - 1)], 1
+/// without counts. A tree's points may have been used more often than the tree says
+/// (a move waits for the end of a round), so each point is scored with its own count.
+struct PointPenalty {
+    const uint32_t* counts = nullptr;
+    const float* factors = nullptr;
+    size_t nfactors = 1;
+    uint32_t min = 0;
+    uint32_t per_site = 1;
+    float operator()(uint32_t p) const
+    {
+        if (!counts)
+            return 1.0f;
+        const size_t d = counts[p / per_site] - min;
+        return factors[d < nfactors ? d : nfactors - 1];
+    }
 };
 
 /// A dynamic kd-tree over some of a fixed array of points (row-major, `dim` floats each):
 /// static nanoflann trees of geometrically growing sizes (the logarithmic method) plus a
-/// short list searched linearly. Inserting fills the list; a full list becomes a tree and
-/// trees of similar size merge. A point that leaves is only marked (by the LiveTest); when
-/// half the stored points have left, the rest are rebuilt, and a tree of few live points
-/// is searched linearly. Everything is deterministic: the structure depends only on the
-/// sequence of calls.
+/// short list searched linearly. Inserted points join the list; a full list becomes a tree
+/// and trees of similar size merge. A point that leaves is only marked (by the LiveTest);
+/// when half the stored points have left, the rest are rebuilt, and a tree of few live
+/// points is searched linearly. Deterministic: the structure depends only on the calls.
 /// Thread safety: nearest() may be called concurrently; the rest may not.
 class DynamicKdTree {
 public:
@@ -39,25 +56,22 @@ public:
 
     /// Holds exactly `ids` (all live), built in one go.
     void assign(std::vector<uint32_t> ids);
-    /// Adds live point p.
-    void insert(uint32_t p, const LiveTest& live);
-    /// One stored point is no longer live (`live` already says so).
-    void removed(const LiveTest& live);
+    /// Adds live points.
+    void insert(const std::vector<uint32_t>& ids, const LiveTest& live);
+    /// `n` stored points are no longer live (`live` already says so).
+    void removed(size_t n, const LiveTest& live);
     size_t live() const { return m_live; }
 
-    /// The live point nearest `query` among those with squared distance < `bound` (nanoflann
-    /// `eps`: a returned point may be up to (1 + eps) times farther than the nearest): sets
-    /// `point` and returns its squared distance, or returns `bound` (point untouched) if
-    /// there is none.
-    float nearest(
-        const float* query, float bound, float eps, const LiveTest& live, uint32_t& point) const;
-
-    /// Bytes held (copies of the points in tree order, indices, nodes).
-    size_t memory_bytes() const;
+    /// The live point of least score d x penalty(p) (d its squared distance to `query`)
+    /// among those scoring below `bound`, where every point's penalty is at least
+    /// `least_penalty`: sets `point` and returns its score, or returns `bound` (point
+    /// untouched) if there is none. nanoflann's `eps` allows a point whose distance is up to
+    /// (1 + eps) times the best's.
+    float nearest(const float* query, float bound, float eps, const LiveTest& live,
+        const PointPenalty& penalty, float least_penalty, uint32_t& point) const;
 
 private:
     struct Part; // one static nanoflann tree over a copy of its points
-    void rebuild(const LiveTest& live);
     std::vector<uint32_t> live_ids(const LiveTest& live) const;
 
     const float* m_points;

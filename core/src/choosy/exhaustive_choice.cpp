@@ -35,24 +35,28 @@ public:
             OIIO::paropt(nthreads).minitems(1));
     }
 
-    uint32_t choose(const float* query) const override
+    uint32_t choose(const float* query, const uint32_t* hints, size_t nhints) const override
     {
         // Scores are squared distance x factor; a point's distance need only be summed
         // while it can still beat the best (slightly loosened so rounding in the division
-        // never drops a point whose product would win).
+        // never drops a point whose product would win). The hints start the bound.
         float best = std::numeric_limits<float>::infinity();
         uint32_t best_point = 0;
         const uint32_t* counts = m_counts.counts();
-        for (size_t p = 0; p < m_count; ++p) {
+        auto offer = [&](size_t p) {
             const float f = m_counts.factor(counts[p / m_orientations]);
             const float bound = best / f * 1.0001f;
             const float d
                 = distance2_below(query, m_vectors.data() + p * size_t(m_dim), m_dim, bound);
-            if (d < bound && d * f < best) {
+            if (d < bound && (d * f < best || (d * f == best && p < best_point))) {
                 best = d * f;
                 best_point = uint32_t(p);
             }
-        }
+        };
+        for (size_t h = 0; h < nhints; ++h)
+            offer(hints[h]);
+        for (size_t p = 0; p < m_count; ++p)
+            offer(p);
         return best_point;
     }
 

@@ -3,6 +3,7 @@
 // orientations, the sample's points and the output level as a ChoosyTarget.
 #include "choosy_pvt.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -73,8 +74,9 @@ void copy_choice(GridLevel& out, int x, int y, const std::vector<Plane>& gaussia
 {
     for (size_t ch = 0; ch < gaussian.size(); ++ch)
         out.gaussian[ch](x, y) = gaussian[ch](sx, sy);
-    out.source[size_t(y) * size_t(out.width()) + size_t(x)]
-        = uint32_t(sy) * uint32_t(gaussian[0].width()) + uint32_t(sx);
+    const size_t site = size_t(y) * size_t(out.width()) + size_t(x);
+    out.source[site] = uint32_t(sy) * uint32_t(gaussian[0].width()) + uint32_t(sx);
+    out.orientation[site] = uint8_t(t);
     if (laplacian.empty())
         return;
     // Child (cx, cy) of the output's 2x2 block, at (2cx - 1, 2cy - 1) from the block's
@@ -128,6 +130,33 @@ public:
             out[s] = size_t(yy) * size_t(w) + size_t(xx);
         }
         return slots.size();
+    }
+
+    size_t hints(size_t site, uint32_t* out) const override
+    {
+        const std::vector<RingSlot>& slots = ring_slots();
+        std::array<size_t, 24> at {};
+        neighbors(site, at.data());
+        const int sw = m_candidates.width;
+        size_t n = 0;
+        for (size_t s = 0; s < slots.size(); ++s) {
+            const int t = m_out.orientation[at[s]];
+            if (t == kNotChosen)
+                continue;
+            // The neighbour at offset o copied sample pixel q seen in orientation t, so this
+            // pixel continues it at q - T_t(o).
+            int dx = slots[s].dx, dy = slots[s].dy;
+            orient(t, dx, dy);
+            const uint32_t q = m_out.source[at[s]];
+            const int64_t c
+                = m_candidates.index(int(q % uint32_t(sw)) - dx, int(q / uint32_t(sw)) - dy);
+            if (c < 0)
+                continue;
+            const uint32_t point = uint32_t(c) * uint32_t(m_orientations) + uint32_t(t);
+            if (std::find(out, out + n, point) == out + n)
+                out[n++] = point;
+        }
+        return n;
     }
 
     void apply(size_t site, uint32_t point) override

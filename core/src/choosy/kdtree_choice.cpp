@@ -9,6 +9,7 @@
 #include <OpenImageIO/parallel.h>
 
 #include "dynamic_kdtree_pvt.h"
+#include "search/distance_pvt.h"
 #include "search/pca_pvt.h"
 
 namespace texsyn::detail {
@@ -38,6 +39,11 @@ PcaProjection fit_pca(const AnalysisPoints& points, int dims)
     return PcaProjection(set, std::min(dims, points.dim), 1.0);
 }
 
+// Trees are keyed by use count: the points of a site used c times are in tree c (§6.4). A
+// site chosen during a round is scored with its new count at once, but its points move to
+// their new tree when the round ends (settle): one bulk insert per tree and round instead
+// of one per choice. Scores stay exact meanwhile: a tree's search bound uses the least
+// penalty its points can have, and each point is scored with its own count.
 class KdTreeChoice final : public ChoiceIndex {
 public:
     KdTreeChoice(const AnalysisPoints& points, float penalty, int dims, float eps, int nthreads)
@@ -47,6 +53,8 @@ public:
         , m_eps(eps)
         , m_reduced(points.count * size_t(m_pca.output_dim()))
         , m_counts(points.sites(), penalty)
+        , m_home(points.sites(), 0)
+        , m_pending_flag(points.sites(), 0)
     {
         const size_t rd = size_t(m_pca.output_dim());
         const size_t blocks = (m_count + kProjectBlock - 1) / kProjectBlock;
@@ -64,27 +72,37 @@ public:
         reset();
     }
 
-    uint32_t choose(const float* query) const override
+    uint32_t choose(const float* query, const uint32_t* hints, size_t nhints) const override
     {
         thread_local std::vector<float> reduced;
-        reduced.resize(size_t(m_pca.output_dim()));
+        const int rd = m_pca.output_dim();
+        reduced.resize(size_t(rd));
         m_pca.project(query, reduced.data());
-        // Trees by increasing count, so the penalty grows and each tree is searched only
-        // within the radius that could still beat the best so far (loosened slightly so
-        // rounding in the division never drops a winner).
+        const PointPenalty penalty = point_penalty();
+        // The hints (k-coherence) give a first bound.
         float best = std::numeric_limits<float>::infinity();
         uint32_t best_point = 0;
-        const uint32_t first = m_counts.penalized() ? m_counts.min() : 0;
-        for (uint32_t c = first; c < m_trees.size(); ++c) {
+        for (size_t h = 0; h < nhints; ++h) {
+            const uint32_t p = hints[h];
+            const float d = penalty(p)
+                * distance2(reduced.data(), m_reduced.data() + size_t(p) * size_t(rd), rd);
+            if (d < best || (d == best && p < best_point)) {
+                best = d;
+                best_point = p;
+            }
+        }
+        // Trees by increasing count, so the penalty grows and each tree is searched only
+        // within the radius that could still beat the best so far.
+        for (uint32_t c = 0; c < m_trees.size(); ++c) {
             const DynamicKdTree& tree = m_trees[c];
             if (tree.live() == 0)
                 continue;
-            const float f = m_counts.factor(c);
-            const float bound = best / f * 1.0001f;
+            const float least = m_counts.factor(std::max(c, m_counts.min()));
             uint32_t p = 0;
-            const float d = tree.nearest(reduced.data(), bound, m_eps, live(c), p);
-            if (d < bound && (d * f < best || (d * f == best && p < best_point))) {
-                best = d * f;
+            const float score
+                = tree.nearest(reduced.data(), best, m_eps, live(c), penalty, least, p);
+            if (score < best) {
+                best = score;
                 best_point = p;
             }
         }
@@ -93,23 +111,46 @@ public:
 
     void record(uint32_t point) override
     {
-        const uint32_t site = point / m_orientations;
-        const uint32_t c = m_counts.count(site);
+        const size_t site = site_of(point);
         m_counts.add(site);
-        if (!m_counts.penalized())
-            return; // one tree: counts do not change scores
-        // The site's points leave tree c for tree c + 1 (§6.4).
-        for (uint32_t t = 0; t < m_orientations; ++t)
-            m_trees[c].removed(live(c));
-        if (m_trees.size() <= c + 1)
+        if (m_counts.penalized() && !m_pending_flag[site]) {
+            m_pending_flag[site] = 1;
+            m_pending.push_back(uint32_t(site));
+        }
+    }
+
+    void settle() override
+    {
+        // Each pending site's points leave their tree for the tree of their count now.
+        std::vector<std::vector<uint32_t>> arriving;
+        std::vector<size_t> leaving(m_trees.size(), 0);
+        for (uint32_t site : m_pending) {
+            const uint32_t from = m_home[site], to = m_counts.count(site);
+            m_pending_flag[site] = 0;
+            m_home[site] = to;
+            leaving[from] += m_orientations;
+            if (arriving.size() <= to)
+                arriving.resize(to + 1);
+            for (uint32_t t = 0; t < m_orientations; ++t)
+                arriving[to].push_back(site * m_orientations + t);
+        }
+        m_pending.clear();
+        for (uint32_t c = 0; c < leaving.size(); ++c)
+            if (leaving[c])
+                m_trees[c].removed(leaving[c], live(c));
+        while (m_trees.size() < arriving.size())
             m_trees.emplace_back(m_reduced.data(), m_pca.output_dim());
-        for (uint32_t t = 0; t < m_orientations; ++t)
-            m_trees[c + 1].insert(site * m_orientations + t, live(c + 1));
+        for (uint32_t c = 0; c < arriving.size(); ++c)
+            if (!arriving[c].empty())
+                m_trees[c].insert(arriving[c], live(c));
     }
 
     void reset() override
     {
         m_counts.reset();
+        std::fill(m_home.begin(), m_home.end(), 0u);
+        std::fill(m_pending_flag.begin(), m_pending_flag.end(), char(0));
+        m_pending.clear();
         m_trees.clear();
         m_trees.emplace_back(m_reduced.data(), m_pca.output_dim());
         std::vector<uint32_t> all(m_count);
@@ -121,12 +162,21 @@ public:
     const UseCounts& counts() const override { return m_counts; }
 
 private:
-    // The points tree c holds: those whose site is used c times (all, unpenalized).
+    // The points tree c holds: those of the sites whose home is c (all, unpenalized).
     LiveTest live(uint32_t c) const
     {
         if (!m_counts.penalized())
             return LiveTest {};
-        return LiveTest { m_counts.counts(), c, m_orientations };
+        return LiveTest { m_home.data(), c, m_orientations };
+    }
+
+    PointPenalty point_penalty() const
+    {
+        if (!m_counts.penalized())
+            return PointPenalty {};
+        const std::vector<float>& f = m_counts.factors();
+        return PointPenalty { m_counts.counts(), f.data(), f.size(), m_counts.min(),
+            m_orientations };
     }
 
     PcaProjection m_pca;
@@ -134,7 +184,10 @@ private:
     float m_eps;
     std::vector<float> m_reduced; // count x output_dim
     UseCounts m_counts;
-    std::vector<DynamicKdTree> m_trees; // by use count
+    std::vector<uint32_t> m_home;     // per site: the tree holding its points
+    std::vector<char> m_pending_flag; // per site: chosen this round
+    std::vector<uint32_t> m_pending;  // sites chosen this round, in order
+    std::vector<DynamicKdTree> m_trees;
 };
 
 } // namespace
