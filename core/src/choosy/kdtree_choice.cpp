@@ -55,6 +55,7 @@ public:
         , m_counts(points.sites(), penalty)
         , m_home(points.sites(), 0)
         , m_pending_flag(points.sites(), 0)
+        , m_nthreads(nthreads)
     {
         const size_t rd = size_t(m_pca.output_dim());
         const size_t blocks = (m_count + kProjectBlock - 1) / kProjectBlock;
@@ -135,14 +136,20 @@ public:
                 arriving[to].push_back(site * m_orientations + t);
         }
         m_pending.clear();
-        for (uint32_t c = 0; c < leaving.size(); ++c)
-            if (leaving[c])
-                m_trees[c].removed(leaving[c], live(c));
         while (m_trees.size() < arriving.size())
             m_trees.emplace_back(m_reduced.data(), m_pca.output_dim());
-        for (uint32_t c = 0; c < arriving.size(); ++c)
-            if (!arriving[c].empty())
-                m_trees[c].insert(arriving[c], live(c));
+        leaving.resize(m_trees.size(), 0);
+        arriving.resize(m_trees.size());
+        // Trees change independently (each its removals, then its arrivals): in parallel.
+        OIIO::parallel_for(
+            int64_t(0), int64_t(m_trees.size()),
+            [&](int64_t c) {
+                if (leaving[size_t(c)])
+                    m_trees[size_t(c)].removed(leaving[size_t(c)], live(uint32_t(c)));
+                if (!arriving[size_t(c)].empty())
+                    m_trees[size_t(c)].insert(arriving[size_t(c)], live(uint32_t(c)));
+            },
+            OIIO::paropt(m_nthreads).minitems(1));
     }
 
     void reset() override
@@ -188,6 +195,7 @@ private:
     std::vector<char> m_pending_flag; // per site: chosen this round
     std::vector<uint32_t> m_pending;  // sites chosen this round, in order
     std::vector<DynamicKdTree> m_trees;
+    int m_nthreads;
 };
 
 } // namespace
