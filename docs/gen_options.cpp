@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Prints docs/options-<method>.md from the method's option table.
-// usage: texsyn_docgen pyramid|solid|mix|neighborhood
+// usage: texsyn_docgen pyramid|solid|mix|neighborhood|choosy
 #include <cstdio>
 #include <string>
 
+#include <texsyn/choosy.h>
 #include <texsyn/neighborhood.h>
 #include <texsyn/synthesis.h>
 
@@ -50,8 +51,13 @@ int main(int argc, char* argv[])
             "Wei & Levoy neighbourhood synthesis ([neighborhood.md](neighborhood.md)). The tool "
             "also takes `map=FILE.exr`, the source map to write (not an option of the method: "
             "it names a file).\n\n");
+    } else if (method == "choosy") {
+        print_table<texsyn::ChoosyOptions>("choosy", "ChoosyOptions::table()",
+            "Castellanos & Williams choosy sampling on the pixel grid. Each side of `size` must "
+            "be a multiple of 2^(levels-1). The tool also takes `map=FILE.exr`, the source map "
+            "to write (not an option of the method: it names a file).\n\n");
     } else {
-        std::fprintf(stderr, "usage: texsyn_docgen pyramid|solid|mix|neighborhood\n");
+        std::fprintf(stderr, "usage: texsyn_docgen pyramid|solid|mix|neighborhood|choosy\n");
         return 1;
     }
     return 0;

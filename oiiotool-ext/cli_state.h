@@ -10,6 +10,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <texsyn/choosy.h>
 #include <texsyn/color.h>
 #include <texsyn/neighborhood.h>
 #include <texsyn/recipe.h>
@@ -204,17 +205,70 @@ PyramidOptions parse_transfer_options(const std::string& command, const std::str
 /// image's layout with the sample's statistics.
 void run_transfer(CliState& state, const std::string& command, const std::string& modifiers);
 
-/// --neighborhood's options and the tool's own map=FILE (the source map to write).
-struct NeighborhoodCommand {
-    NeighborhoodOptions options;
+/// The options of a method that copies sample pixels (--neighborhood, --choosy) and the
+/// tool's own map=FILE: the source map to write (a file name, so not a method option).
+template <class T>
+struct MapCommand {
+    T options;
     std::string map;
 };
-/// Parses and validates --neighborhood's modifiers; throws CliError naming the command.
-NeighborhoodCommand parse_neighborhood_options(
-    const std::string& command, const std::string& modifiers);
-/// --neighborhood[:name=value…]: pops a sample, pushes the synthesis; with map=FILE also
-/// writes the source map (to a temporary file in pending_outputs).
+
+/// Takes map=FILE.exr (at most once) out of a command's modifiers into `map`; returns the
+/// other modifiers. Throws CliError naming the command.
+std::string take_map_modifier(
+    const std::string& command, const std::string& modifiers, std::string& map);
+
+/// Parses and validates the modifiers of a command whose method has options T and writes a
+/// source map with map=; throws CliError naming the command.
+template <class T>
+MapCommand<T> parse_map_command(const std::string& command, const std::string& modifiers)
+{
+    MapCommand<T> result;
+    const std::string rest = take_map_modifier(command, modifiers, result.map);
+    result.options = parse_modifiers(command, rest, T::table());
+    std::string error;
+    if (!result.options.validate(error))
+        throw CliError(command + " : " + error);
+    return result;
+}
+
+/// Writes `map`, the source map of a synthesis of `sample` by `command`, for `filename`
+/// (to a temporary file in pending_outputs).
+void write_source_map_output(CliState& state, const std::string& command, const StackImage& sample,
+    OIIO::ImageBuf& map, const std::string& filename);
+
+/// A synthesis function that can fill a source map (neighborhood_synthesize, …).
+template <class T>
+using MapSynthesis = bool (*)(OIIO::ImageBuf&, const OIIO::ImageBuf&, const T&, OIIO::ImageBuf*);
+
+/// COMMAND[:name=value…] for `method` (options at Recipe member `member`), run by
+/// `synthesize`: pops a sample, pushes the synthesis (with its recipe); with map=FILE also
+/// writes the source map.
+template <class T>
+void run_map_command(CliState& state, const std::string& command, const std::string& modifiers,
+    const char* method, T Recipe::*member, MapSynthesis<T> synthesize)
+{
+    MapCommand<T> parsed = parse_map_command<T>(command, modifiers);
+    apply_run_settings(state, command, parsed.options);
+    StackImage sample = state.pop(command);
+    OIIO::ImageBuf map;
+    run_synthesis(state, command, synthesis_result(sample, sample.sources), "", [&](StackImage& r) {
+        if (!synthesize(r.buf, sample.buf, parsed.options, parsed.map.empty() ? nullptr : &map))
+            return false;
+        describe_by_recipe(state, sample, r, method, member, parsed.options);
+        return true;
+    });
+    if (!parsed.map.empty())
+        write_source_map_output(state, command, sample, map, parsed.map);
+}
+
+/// --neighborhood[:name=value…]: Wei & Levoy; pops a sample, pushes the synthesis; with
+/// map=FILE also writes the source map.
 void run_neighborhood(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// --choosy[:name=value…]: Castellanos & Williams choosy sampling; pops a sample, pushes
+/// the synthesis; with map=FILE also writes the source map.
+void run_choosy(CliState& state, const std::string& command, const std::string& modifiers);
 
 /// --apply-map MAP IMAGE: reads IMAGE (an input like any other), rearranges its pixels by
 /// the source map MAP, and pushes the result, which keeps IMAGE's colour space on output.

@@ -99,10 +99,21 @@ void print_help()
         "                          sample coordinate of every output pixel. Options:\n");
     print_table(NeighborhoodOptions::table(), NeighborhoodOptions());
     std::printf(
+        "    --choosy[:name=value...]\n"
+        "                          Castellanos & Williams choosy sampling of the current\n"
+        "                          image: coarse to fine by Laplacian inversion, each\n"
+        "                          sample pixel's score penalised by its use count (keeps\n"
+        "                          the sample's histogram), isotropic by default, toroidal.\n"
+        "                          Each side of size must be a multiple of 2^(levels-1).\n"
+        "                          map=FILE.exr also writes the sample coordinate of every\n"
+        "                          output pixel.\n"
+        "                          Options:\n");
+    print_table(ChoosyOptions::table(), ChoosyOptions());
+    std::printf(
         "    --apply-map MAP IMAGE Read IMAGE (aligned with the sample of a --neighborhood\n"
-        "                          run) and rearrange its pixels by that run's source map\n"
-        "                          MAP: height, normal or roughness maps follow the colour.\n"
-        "                          Written in IMAGE's colour space by default\n"
+        "                          or --choosy run) and rearrange its pixels by that run's\n"
+        "                          source map MAP: height, normal or roughness maps follow\n"
+        "                          the colour. Written in IMAGE's colour space by default\n"
         "\n"
         "Examples:\n"
         "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o "
@@ -112,6 +123,7 @@ void print_help()
         "    texsyn rust.png paper.png --mix:palette=0:pattern=1 -o mix.exr\n"
         "    texsyn photo.png rust.png --transfer -o rusty_photo.exr\n"
         "    texsyn grass.png --neighborhood:size=512x512:map=coords.exr -o grass_big.exr\n"
+        "    texsyn stone.png --choosy:size=512x512:iterations=1,8 -o stone_big.exr\n"
         "    texsyn --apply-map coords.exr grass_height.png -o grass_height_big.exr\n");
 }
 
@@ -126,7 +138,9 @@ void print_methods()
                 "transfer   Heeger & Bergen 1995 section 5: match-texture applied to an image "
                 "instead of noise (its layout, the sample's statistics)\n"
                 "neighborhood  Wei & Levoy 2000: multi-resolution neighbourhood search "
-                "(exhaustive, tsvq, kdtree, coherent), toroidal, with source maps\n");
+                "(exhaustive, tsvq, kdtree, coherent), toroidal, with source maps\n"
+                "choosy     Castellanos & Williams: choosy sampling (use-count penalty keeps "
+                "the sample's histogram), isotropic by default, toroidal, with source maps\n");
 }
 
 void print_version()

@@ -150,8 +150,8 @@ void write_recipe(CliState& state, const std::string& filename)
     StackImage& img = state.top("--recipe");
     if (!img.has_recipe)
         throw CliError("--recipe " + filename
-            + " : the current image is not a --pyramid or --neighborhood synthesis of a sample "
-              "file (recipes describe only those)");
+            + " : the current image is not a --pyramid, --neighborhood or --choosy synthesis "
+              "of a sample file (recipes describe only those)");
     Recipe recipe = img.recipe;
     recipe.tocolorspace = img.output_colorspace;
     const std::string dir = std::filesystem::path(filename).parent_path().string();

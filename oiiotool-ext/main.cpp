@@ -43,7 +43,8 @@ std::pair<std::string, std::string> split_command(const std::string& a)
 bool is_command(const std::string& name)
 {
     return name == "--pyramid" || name == "--analyze" || name == "--check" || name == "--solid"
-        || name == "--mix" || name == "--transfer" || name == "--neighborhood";
+        || name == "--mix" || name == "--transfer" || name == "--neighborhood"
+        || name == "--choosy";
 }
 
 // What the pre-pass knows of each item on the stack.
@@ -51,7 +52,7 @@ enum class Kind { Image, Analysis, Solid };
 
 // Checks a command's options (throws CliError) and returns how many images it pops (a
 // command pushes one image back, --check leaves the one it reports on). Files a command
-// writes besides -o (--neighborhood's map=) are added to `outputs`.
+// writes besides -o (map= of --neighborhood and --choosy) are added to `outputs`.
 int check_command(
     const std::string& name, const std::string& modifiers, std::vector<std::string>& outputs)
 {
@@ -68,8 +69,10 @@ int check_command(
         parse_analyze_options(name, modifiers);
     } else if (name == "--solid") {
         parse_modifiers(name, modifiers, SolidOptions::table());
-    } else if (name == "--neighborhood") {
-        const std::string map = parse_neighborhood_options(name, modifiers).map;
+    } else if (name == "--neighborhood" || name == "--choosy") {
+        const std::string map = name == "--choosy"
+            ? parse_map_command<ChoosyOptions>(name, modifiers).map
+            : parse_map_command<NeighborhoodOptions>(name, modifiers).map;
         if (!map.empty())
             outputs.push_back(map);
     } else {
@@ -341,6 +344,8 @@ void run(CliState& state, const std::vector<std::string>& args)
                 run_transfer(state, name, modifiers);
             else if (name == "--neighborhood")
                 run_neighborhood(state, name, modifiers);
+            else if (name == "--choosy")
+                run_choosy(state, name, modifiers);
         } else {
             push_input(state, a);
         }

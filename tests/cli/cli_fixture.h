@@ -5,6 +5,7 @@
 #pragma once
 
 #include <texsyn/io.h>
+#include <texsyn/recipe.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -16,6 +17,7 @@
 
 #include <sys/wait.h>
 
+#include <OpenImageIO/hash.h>
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <gtest/gtest.h>
@@ -123,6 +125,74 @@ protected:
     {
         auto in = OIIO::ImageInput::open((dir / name).string());
         return in ? in->spec().format : OIIO::TypeUnknown;
+    }
+
+    // The pixels of an image as stored, hashed.
+    static std::string pixel_hash(const OIIO::ImageBuf& buf)
+    {
+        std::vector<float> px(size_t(buf.spec().image_pixels()) * size_t(buf.nchannels()));
+        EXPECT_TRUE(buf.get_pixels(buf.roi(), OIIO::TypeFloat, px.data()));
+        return OIIO::Strutil::fmt::format("{:016x}",
+            OIIO::Strutil::strhash(std::string_view(
+                reinterpret_cast<const char*>(px.data()), px.size() * sizeof(float))));
+    }
+
+    // Checks the source map `map` written with `image`, a synthesis of `sample` stored in
+    // the same encoding: a 2-channel float "x", "y" OpenEXR naming the sample and its size,
+    // each pixel naming the sample pixel `image` holds there (exactly), which --apply-map
+    // turns the sample into `image`.
+    void expect_source_map(const std::string& map, const std::string& image,
+        const std::string& sample, const std::string& method)
+    {
+        OIIO::ImageBuf out = read(image), coords = read(map), in = read(sample);
+        ASSERT_EQ(coords.nchannels(), 2);
+        EXPECT_EQ(coords.spec().channelnames, (std::vector<std::string> { "x", "y" }));
+        EXPECT_EQ(file_type(map), OIIO::TypeFloat);
+        EXPECT_EQ(coords.spec().get_string_attribute("synth:sample_size"),
+            std::to_string(in.spec().width) + "x" + std::to_string(in.spec().height));
+        EXPECT_EQ(coords.spec().get_string_attribute("synth:sample"), sample);
+        EXPECT_EQ(coords.spec().get_string_attribute("synth:method"), method);
+        const int nc = out.nchannels();
+        ASSERT_EQ(in.nchannels(), nc);
+        std::vector<float> a(static_cast<size_t>(nc)), b(a);
+        for (int y = 0; y < out.spec().height; ++y)
+            for (int x = 0; x < out.spec().width; ++x) {
+                float xy[2];
+                coords.getpixel(x, y, xy, 2);
+                out.getpixel(x, y, a.data(), nc);
+                in.getpixel(int(xy[0]), int(xy[1]), b.data(), nc);
+                ASSERT_EQ(a, b) << image << " " << x << "," << y;
+            }
+        const std::string again = "again_" + image;
+        CliRun r = texsyn("--apply-map " + map + " " + sample + " -o " + again);
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(pixel_hash(read(again)), pixel_hash(out));
+        fs::remove(dir / again);
+    }
+
+    // Runs `args`: a synthesis of stucco.png by `method`, with map=, written by
+    // `-d float -o out.exr --recipe r.texsyn`. Checks that the recipe names the method but not
+    // the tool's map=, and that run_recipe() makes out.exr's pixels and synth:options;
+    // returns the recipe.
+    Recipe expect_recipe_remakes_the_output(const std::string& args, const std::string& method)
+    {
+        Recipe recipe;
+        CliRun r = texsyn(args);
+        EXPECT_EQ(r.status, 0) << r.err;
+        const std::string json = slurp(dir / "r.texsyn");
+        EXPECT_NE(json.find("\"method\": \"" + method + "\""), std::string::npos) << json;
+        EXPECT_EQ(json.find("map"), std::string::npos) << json; // the tool's, not the method's
+        std::string error;
+        EXPECT_TRUE(recipe_from_filename((dir / "r.texsyn").string(), recipe, error)) << error;
+        EXPECT_EQ(recipe.method, method);
+        EXPECT_EQ(recipe.sample, (dir / "stucco.png").string());
+        EXPECT_FALSE(recipe.subbands);
+        OIIO::ImageBuf again, out = read("out.exr");
+        EXPECT_TRUE(run_recipe(recipe, again, nullptr, error)) << error;
+        EXPECT_EQ(pixel_hash(again), pixel_hash(out));
+        EXPECT_EQ(again.spec().get_string_attribute("synth:options"),
+            out.spec().get_string_attribute("synth:options"));
+        return recipe;
     }
 
     void write_sample(

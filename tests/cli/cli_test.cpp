@@ -185,12 +185,15 @@ TEST_F(Cli, HelpVersionAndMethodList)
     EXPECT_NE(r.out.find("--pyramid"), std::string::npos);
     EXPECT_NE(r.out.find("orientations"), std::string::npos);
     EXPECT_NE(r.out.find("--check"), std::string::npos);
+    EXPECT_NE(r.out.find("--choosy"), std::string::npos);
+    EXPECT_NE(r.out.find("penalty"), std::string::npos);
     r = texsyn("--version");
     EXPECT_EQ(r.status, 0);
     EXPECT_EQ(r.out.find("texsyn "), 0u);
     r = texsyn("--list-methods");
     EXPECT_EQ(r.status, 0);
     EXPECT_EQ(r.out.find("pyramid"), 0u);
+    EXPECT_NE(r.out.find("\nchoosy "), std::string::npos);
 }
 
 TEST_F(Cli, VerboseReportsTheRun)
@@ -402,8 +405,8 @@ TEST_F(Cli, RecipesAreWrittenForSynthesesOfFiles)
     EXPECT_EQ(recipe.pyramid.seed, 3u);
     EXPECT_EQ(recipe.pyramid.width, 40);
     expect_failure("stucco.png --recipe r2.texsyn",
-        "texsyn ERROR: --recipe r2.texsyn : the current image is not a --pyramid or "
-        "--neighborhood synthesis of a sample file (recipes describe only those)",
+        "texsyn ERROR: --recipe r2.texsyn : the current image is not a --pyramid, "
+        "--neighborhood or --choosy synthesis of a sample file (recipes describe only those)",
         { "stucco.png", "r.texsyn" });
     expect_failure("stucco.png --pyramid --recipe r2.json",
         "texsyn ERROR: --recipe r2.json : name the recipe *.texsyn", { "stucco.png", "r.texsyn" });
@@ -755,6 +758,6 @@ TEST_F(Cli, BadMixAndTransferInputIsRefused)
         "--transfer : stucco.png is an analysis, not an image (only --pyramid synthesizes from "
         "an analysis)");
     refused("rust.png stucco.png --mix:split=1 --recipe r.texsyn",
-        "--recipe r.texsyn : the current image is not a --pyramid or --neighborhood synthesis "
-        "of a sample file (recipes describe only those)");
+        "--recipe r.texsyn : the current image is not a --pyramid, --neighborhood or --choosy "
+        "synthesis of a sample file (recipes describe only those)");
 }

@@ -3,21 +3,9 @@
 #include <texsyn/io.h>
 #include <texsyn/recipe.h>
 
-#include <OpenImageIO/hash.h>
-
 #include "cli_fixture.h"
 
 namespace {
-
-// The pixels of an image as stored, hashed.
-std::string pixel_hash(const OIIO::ImageBuf& buf)
-{
-    std::vector<float> px(size_t(buf.spec().image_pixels()) * size_t(buf.nchannels()));
-    EXPECT_TRUE(buf.get_pixels(buf.roi(), OIIO::TypeFloat, px.data()));
-    return OIIO::Strutil::fmt::format("{:016x}",
-        OIIO::Strutil::strhash(
-            std::string_view(reinterpret_cast<const char*>(px.data()), px.size() * sizeof(float))));
-}
 
 constexpr const char* kQuick = "--neighborhood:size=64x48:levels=2:n=7,5:search=exhaustive";
 
@@ -33,51 +21,19 @@ TEST_F(Cli, NeighborhoodWritesTheImageAndItsSourceMap)
     EXPECT_EQ(out.spec().get_string_attribute("synth:method"), "neighborhood");
     EXPECT_EQ(
         out.spec().get_string_attribute("synth:options").find("size=64x48:levels=2:n=7,5:"), 0u);
-    OIIO::ImageBuf map = read("coords.exr");
-    ASSERT_EQ(map.nchannels(), 2);
-    EXPECT_EQ(map.spec().channelnames, (std::vector<std::string> { "x", "y" }));
-    EXPECT_EQ(file_type("coords.exr"), OIIO::TypeFloat);
-    EXPECT_EQ(map.spec().get_string_attribute("synth:sample_size"), "128x128");
-    EXPECT_EQ(map.spec().get_string_attribute("synth:sample"), "stucco.png");
-
-    // Every output pixel is the sample pixel the map names (8-bit in, 8-bit out: exact).
-    OIIO::ImageBuf sample = read("stucco.png");
-    for (int y = 0; y < 48; y += 5)
-        for (int x = 0; x < 64; x += 3) {
-            float xy[2], a[3], b[3];
-            map.getpixel(x, y, xy, 2);
-            out.getpixel(x, y, a, 3);
-            sample.getpixel(int(xy[0]), int(xy[1]), b, 3);
-            for (int c = 0; c < 3; ++c)
-                ASSERT_EQ(a[c], b[c]) << x << "," << y;
-        }
-
-    // The map re-applied to the sample gives the same picture.
-    r = texsyn("--apply-map coords.exr stucco.png -o again.png");
-    ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(pixel_hash(read("again.png")), pixel_hash(out));
+    // Every output pixel is the sample pixel the map names (8-bit in, 8-bit out: exact), and
+    // the map re-applied to the sample gives the same picture.
+    expect_source_map("coords.exr", "out.png", "stucco.png", "neighborhood");
 }
 
 TEST_F(Cli, RecipeAfterNeighborhoodMakesTheSameImage)
 {
-    CliRun r = texsyn("--seed 3 stucco.png --neighborhood:size=32x24:levels=2:n=7,5:"
-                      "search=exhaustive:map=coords.exr -d float -o out.exr --recipe r.texsyn");
-    ASSERT_EQ(r.status, 0) << r.err;
-    const std::string json = slurp(dir / "r.texsyn");
-    EXPECT_NE(json.find("\"method\": \"neighborhood\""), std::string::npos) << json;
-    EXPECT_EQ(json.find("map"), std::string::npos) << json; // the tool's, not the method's
-    Recipe recipe;
-    std::string error;
-    ASSERT_TRUE(recipe_from_filename((dir / "r.texsyn").string(), recipe, error)) << error;
-    EXPECT_EQ(recipe.sample, (dir / "stucco.png").string());
+    const Recipe recipe = expect_recipe_remakes_the_output(
+        "--seed 3 stucco.png --neighborhood:size=32x24:levels=2:n=7,5:search=exhaustive:"
+        "map=coords.exr -d float -o out.exr --recipe r.texsyn",
+        "neighborhood");
     EXPECT_EQ(recipe.neighborhood.seed, 3u);
-    EXPECT_FALSE(recipe.subbands);
-    OIIO::ImageBuf out = read("out.exr");
-    EXPECT_EQ(NeighborhoodOptions::table().format(recipe.neighborhood),
-        out.spec().get_string_attribute("synth:options"));
-    OIIO::ImageBuf again;
-    ASSERT_TRUE(run_recipe(recipe, again, nullptr, error)) << error;
-    EXPECT_EQ(pixel_hash(again), pixel_hash(out));
+    EXPECT_EQ(recipe.neighborhood.n, (std::vector<int> { 7, 5 }));
 }
 
 TEST_F(Cli, ApplyMapKeepsAnAlignedMapsValues)

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 # docs/recipe.schema.json validates what texsyn reads and writes: the recipes in
-# docs/recipes.md, recipes that `texsyn --recipe` writes for both methods, and good and bad
+# docs/recipes.md, recipes that `texsyn --recipe` writes for every method, and good and bad
 # examples, each bad one for the reason given. (recipe_test checks the schema against the
 # option tables.)
 # usage: check_recipe_schema.py TEXSYN_EXE REPO_DIR WORK_DIR
@@ -44,6 +44,7 @@ env = dict(os.environ, OCIO="")
 for method, modifiers in [
     ("pyramid", "size=32x32:iterations=1:gain=1.5"),
     ("neighborhood", "size=16x16:levels=1:n=3:search=exhaustive:eps=0.5"),
+    ("choosy", "size=16x16:levels=2:iterations=1,2:search=exhaustive:penalty=0.5"),
 ]:
     subprocess.run([texsyn, "stucco_yellow.png", f"--{method}:{modifiers}", "-o", "out.exr",
                     "--recipe", f"{method}.texsyn"], cwd=work, env=env, check=True)
@@ -59,6 +60,12 @@ good = {
                      "n": "7,5", "search": "exhaustive", "eps": 0.5, "subbands": False},
     "neighborhood n as a number": {"sample": "a.png", "method": "neighborhood", "n": 9},
     "neighborhood n as an array": {"sample": "a.png", "method": "neighborhood", "n": [9, 7]},
+    "choosy": {"sample": "a.png", "method": "choosy", "size": "64x64", "levels": 3,
+               "iterations": "1,8", "penalty": 0.5, "isotropic": 0, "search": "kdtree",
+               "dims": 12, "eps": 0.5, "subbands": False},
+    "choosy iterations as a number": {"sample": "a.png", "method": "choosy", "iterations": 2},
+    "choosy iterations as an array": {"sample": "a.png", "method": "choosy",
+                                      "iterations": [1, 8]},
 }
 bad = {
     "no sample": {"size": "8x8"},
@@ -72,6 +79,18 @@ bad = {
     "neighborhood from an analysis": {"sample": "a.TSA", "method": "neighborhood"},
     "n too small": {"sample": "a.png", "method": "neighborhood", "n": [9, 1]},
     "unknown search": {"sample": "a.png", "method": "neighborhood", "search": "brute"},
+    "pyramid iterations as an array": {"sample": "a.png", "iterations": [1, 8]},
+    "a neighborhood option for choosy": {"sample": "a.png", "method": "choosy", "n": 9},
+    "a choosy option for the neighborhood": {"sample": "a.png", "method": "neighborhood",
+                                             "penalty": 1},
+    "a choosy option without the method": {"sample": "a.png", "penalty": 1},
+    "choosy search of the neighborhood only": {"sample": "a.png", "method": "choosy",
+                                               "search": "coherent"},
+    "choosy dims=0": {"sample": "a.png", "method": "choosy", "dims": 0},
+    "choosy iterations=0": {"sample": "a.png", "method": "choosy", "iterations": [1, 0]},
+    "choosy penalty too large": {"sample": "a.png", "method": "choosy", "penalty": 17},
+    "choosy subbands": {"sample": "a.png", "method": "choosy", "subbands": True},
+    "choosy from an analysis": {"sample": "a.tsa", "method": "choosy"},
 }
 for name, recipe in good.items():
     check(name, recipe, True)

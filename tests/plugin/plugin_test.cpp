@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The OIIO format plugin, driven through the STOCK Debian tools (oiiotool, iinfo, maketx,
 // idiff) and Python, with OIIO_LIBRARY_PATH pointing at the built plugin.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -56,10 +57,34 @@ protected:
         std::ofstream(dir / name) << text;
     }
 
+    // `texsyn --seed 5 SAMPLE --METHOD:OPTIONS -d float -o cli.exr --recipe r.texsyn`, then
+    // stock oiiotool opens that recipe, and SAMPLE.texsyn?OPTIONS as REST arguments (the
+    // method last), to the tool's pixels. Returns the REST image's synth:options.
+    std::string expect_recipes_give_the_tools_pixels(
+        const std::string& sample, const std::string& method, const std::string& options);
+
     fs::path dir;
 };
 
 const std::string texsyn_exe = TEXSYN_EXE;
+
+std::string Plugin::expect_recipes_give_the_tools_pixels(
+    const std::string& sample, const std::string& method, const std::string& options)
+{
+    ToolRun r = sh("'" + texsyn_exe + "' --seed 5 " + sample + " --" + method + ":" + options
+        + " -d float -o cli.exr --recipe r.texsyn");
+    EXPECT_EQ(r.status, 0) << r.out;
+    r = sh("oiiotool r.texsyn -d float -o plugin.exr && idiff -fail 0 cli.exr plugin.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    std::string rest = options;
+    std::replace(rest.begin(), rest.end(), ':', '&');
+    r = sh("oiiotool '" + sample + ".texsyn?" + rest + "&seed=5&method=" + method
+        + "' -d float -o rest.exr && idiff -fail 0 cli.exr rest.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    OIIO::ImageBuf image((dir / "rest.exr").string());
+    EXPECT_EQ(image.spec().get_string_attribute("synth:method"), method);
+    return image.spec().get_string_attribute("synth:options");
+}
 
 } // namespace
 
@@ -85,22 +110,24 @@ TEST_F(Plugin, NeighborhoodRecipesGiveTheToolsPixels)
 {
     // A 64x64 crop keeps the exhaustive search quick.
     ASSERT_EQ(sh("oiiotool s.png --cut 64x64+0+0 -o c.png").status, 0);
-    const std::string options = "size=48x40:levels=2:n=7,5:search=exhaustive";
-    ASSERT_EQ(sh("'" + texsyn_exe + "' --seed 5 c.png --neighborhood:" + options
-                  + " -d float -o cli.exr --recipe r.texsyn")
-                  .status,
-        0);
-    ToolRun r = sh("oiiotool r.texsyn -d float -o plugin.exr && idiff -fail 0 cli.exr plugin.exr");
-    EXPECT_EQ(r.status, 0) << r.out;
-    // The same by REST arguments, the method last.
-    r = sh("oiiotool 'c.png.texsyn?size=48x40&levels=2&n=7,5&search=exhaustive&seed=5"
-           "&method=neighborhood' -d float -o rest.exr && idiff -fail 0 cli.exr rest.exr");
-    EXPECT_EQ(r.status, 0) << r.out;
-    OIIO::ImageBuf rest((dir / "rest.exr").string());
-    EXPECT_EQ(rest.spec().get_string_attribute("synth:method"), "neighborhood");
-    const std::string written = rest.spec().get_string_attribute("synth:options");
+    const std::string written = expect_recipes_give_the_tools_pixels(
+        "c.png", "neighborhood", "size=48x40:levels=2:n=7,5:search=exhaustive");
     EXPECT_EQ(written.find("size=48x40:levels=2:n=7,5:"), 0u) << written;
     EXPECT_NE(written.find(":search=exhaustive:"), std::string::npos) << written;
+}
+
+TEST_F(Plugin, ChoosyRecipesGiveTheToolsPixels)
+{
+    const std::string written = expect_recipes_give_the_tools_pixels(
+        "s.png", "choosy", "size=48x40:levels=3:iterations=1,2:search=kdtree:isotropic=0");
+    EXPECT_EQ(written.find("size=48x40:levels=3:iterations=1,2:"), 0u) << written;
+    EXPECT_NE(written.find(":isotropic=0:search=kdtree:"), std::string::npos) << written;
+    // And as JSON, iterations an array.
+    write("a.texsyn",
+        R"({"sample": "s.png", "size": [48, 40], "levels": 3, "iterations": [1, 2],)"
+        R"( "isotropic": 0, "seed": 5, "method": "choosy"})");
+    ToolRun r = sh("oiiotool a.texsyn -d float -o json.exr && idiff -fail 0 cli.exr json.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
 }
 
 TEST_F(Plugin, AnAnalysisFileIsARecipesSample)
@@ -205,6 +232,9 @@ TEST_F(Plugin, BadRecipesFailCleanly)
         { "'s.png.texsyn?iterations=1&method=neighborhood'",
             "key 'iterations' is an option of method pyramid", "File does not exist" },
         { "'s.png.texsyn?size=64x64&seed'", "malformed filename", "File does not exist" },
+        { "'s.png.texsyn?size=62x62&levels=3&method=choosy'",
+            "size=62x62: each side must be a multiple of 4 (2^(levels-1)) for levels=3",
+            "File does not exist" },
     };
     for (const Case& c : cases) {
         for (bool oiiotool : { true, false }) {

@@ -11,6 +11,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <texsyn/choosy.h>
 #include <texsyn/neighborhood.h>
 #include <texsyn/synthesis.h>
 
@@ -20,9 +21,10 @@ namespace texsyn {
 /// [--tocolorspace T] -d float -o out.exr` computes, METHOD being `method`.
 struct Recipe {
     std::string sample;               ///< sample image path (resolved against the recipe's folder)
-    std::string method = "pyramid";   ///< "pyramid" or "neighborhood": which options below run
+    std::string method = "pyramid";   ///< "pyramid", "neighborhood" or "choosy": which options run
     PyramidOptions pyramid;           ///< the pyramid method's options, seed included
     NeighborhoodOptions neighborhood; ///< the neighborhood method's options, seed included
+    ChoosyOptions choosy;             ///< the choosy method's options, seed included
     std::string iscolorspace;         ///< "" = from the file (ColorConfig::guess_colorspace)
     std::string tocolorspace;         ///< "" = scene_linear
     std::string colorconfig;          ///< "" = $OCIO, else the bundled config
@@ -73,7 +75,7 @@ std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir);
 
 /// Runs the recipe: reads the sample, converts it to scene-linear, synthesizes by
 /// `method` (pyramid_synthesize, or synthesize_from_statistics for an analysis file;
-/// neighborhood_synthesize), and
+/// neighborhood_synthesize; choosy_synthesize), and
 /// converts the result to `tocolorspace` (colour associated with alpha, OIIO's in-memory
 /// convention). `dst` is a float image with synth:* metadata (synth:sample,
 /// synth:colorspace too); with `subbands` not null and recipe.subbands set, the subbands

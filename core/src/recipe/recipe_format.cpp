@@ -48,14 +48,17 @@ bool parse_bool(const std::string& key, const std::string& value, bool& out, std
 constexpr const char* recipe_keys
     = "texsyn_recipe, sample, method, seed, iscolorspace, tocolorspace, colorconfig, subbands";
 
-// The type of the method option called `key` (of the first method that has it), or null.
-const OptionType* option_type(const std::string& key)
+// The type of the method option called `key`: `method`'s if it has one (iterations is a
+// list for choosy, an integer for pyramid), else the first method's that has it; or null.
+const OptionType* option_type(const std::string& key, const std::string& method)
 {
     const OptionType* type = nullptr;
-    detail::for_each_recipe_method([&](const char*, auto member) {
-        if (auto* field = detail::table_of(member).find(key); field && !type)
-            type = &field->type;
-    });
+    for (bool own : { true, false })
+        detail::for_each_recipe_method([&](const char* name, auto member) {
+            if (auto* field = detail::table_of(member).find(key);
+                field && !type && (!own || method == name))
+                type = &field->type;
+        });
     return type;
 }
 
@@ -173,14 +176,14 @@ bool number_text(const nlohmann::json& v, bool fractional, std::string& out)
 // A JSON value in the text form set_key takes: strings as they are; integers in decimal;
 // booleans (subbands only) as 1/0; fractional numbers for real and number-list options;
 // arrays of numbers for sizes ([w, h] as "WxH") and lists ([9, 7] as "9,7").
-bool json_text(
-    const std::string& key, const nlohmann::json& v, std::string& out, std::string& error)
+bool json_text(const std::string& key, const nlohmann::json& v, const std::string& method,
+    std::string& out, std::string& error)
 {
     static const char* const string_keys[]
         = { "sample", "method", "iscolorspace", "tocolorspace", "colorconfig" };
     const bool is_string_key
         = std::find(std::begin(string_keys), std::end(string_keys), key) != std::end(string_keys);
-    const OptionType* type = option_type(key);
+    const OptionType* type = option_type(key, method);
     const bool is_list = type && (*type == OptionType::Integers || *type == OptionType::Numbers);
     const bool fractional = type && (*type == OptionType::Real || *type == OptionType::Numbers);
     const bool takes_number = !is_string_key && !(type && *type == OptionType::Size)
@@ -281,13 +284,16 @@ bool parse_recipe(
         error = "a recipe is a JSON object ({ \"sample\": ..., ... })";
         return false;
     }
+    Recipe r;
+    const auto method = j.find("method"); // checked by set_keys
+    const std::string method_name
+        = method != j.end() && method->is_string() ? method->get<std::string>() : r.method;
     std::vector<std::pair<std::string, std::string>> pairs;
     for (auto& [key, value] : j.items()) {
         pairs.emplace_back(key, "");
-        if (!json_text(key, value, pairs.back().second, error))
+        if (!json_text(key, value, method_name, pairs.back().second, error))
             return false;
     }
-    Recipe r;
     if (!set_keys(r, pairs, base_dir, error))
         return false;
     if (r.sample.empty()) {

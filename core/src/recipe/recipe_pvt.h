@@ -14,6 +14,7 @@ void for_each_recipe_method(F&& f)
 {
     f("pyramid", &Recipe::pyramid);
     f("neighborhood", &Recipe::neighborhood);
+    f("choosy", &Recipe::choosy);
 }
 
 /// The option table of the options at `member`.
@@ -37,7 +38,7 @@ bool visit_recipe_options(R& recipe, F&& f)
     return found;
 }
 
-/// "pyramid|neighborhood".
+/// "pyramid|neighborhood|choosy".
 std::string recipe_method_names();
 
 } // namespace texsyn::detail

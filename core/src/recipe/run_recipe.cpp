@@ -53,9 +53,11 @@ bool synthesize_sample(const Recipe& recipe, const ColorConfig& colors, int nthr
         error = recipe.sample + ": " + error;
         return false;
     }
-    if (recipe.method == "neighborhood"
-            ? neighborhood_synthesize(synth, sample, recipe.neighborhood)
-            : pyramid_synthesize(synth, sample, recipe.pyramid, subbands))
+    const bool ok = recipe.method == "neighborhood"
+        ? neighborhood_synthesize(synth, sample, recipe.neighborhood)
+        : recipe.method == "choosy" ? choosy_synthesize(synth, sample, recipe.choosy)
+                                    : pyramid_synthesize(synth, sample, recipe.pyramid, subbands);
+    if (ok)
         return true;
     error = synth.geterror();
     return false;
