@@ -58,7 +58,7 @@ TEST(Recipe, RejectsBadRecipesNamingTheProblem)
     EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "texsyn_recipe": 2 })", "", r, error));
     EXPECT_EQ(error, "texsyn_recipe=2 is newer than this texsyn reads (version 1)");
     EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "method": "quilting" })", "", r, error));
-    EXPECT_EQ(error, "method=quilting is not one of pyramid|neighborhood");
+    EXPECT_EQ(error, "method=quilting is not one of pyramid|neighborhood|choosy");
     EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "seed": -1 })", "", r, error));
     EXPECT_EQ(error, "seed=-1 is out of range (0..2147483647)");
     EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "size": 3.5 })", "", r, error));
@@ -209,6 +209,42 @@ TEST(Recipe, ParsesNeighborhoodRecipes)
         << error;
     EXPECT_EQ(r.pyramid.gain, (std::vector<float> { 1.0f, 1.5f }));
     EXPECT_EQ(r.pyramid.balance, (std::vector<float> { -0.5f }));
+}
+
+TEST(Recipe, ParsesChoosyRecipes)
+{
+    Recipe r;
+    std::string error;
+    // iterations is an integer for the pyramid method and a list for choosy: the recipe's
+    // method decides how an array reads, wherever "method" stands.
+    ASSERT_TRUE(parse_recipe(R"({ "sample": "grass.png", "iterations": [1, 8], "levels": 3,
+        "method": "choosy", "size": [256, 128], "seed": 5, "search": "exhaustive",
+        "penalty": 0.5, "isotropic": 0, "dims": 12, "eps": 0.25 })",
+        "", r, error))
+        << error;
+    EXPECT_EQ(r.method, "choosy");
+    EXPECT_EQ(r.choosy.iterations, (std::vector<int> { 1, 8 }));
+    EXPECT_EQ(r.choosy.levels, 3);
+    EXPECT_EQ(r.choosy.width, 256);
+    EXPECT_EQ(r.choosy.height, 128);
+    EXPECT_EQ(r.choosy.seed, 5u);
+    EXPECT_EQ(r.choosy.search, ChoosySearch::Exhaustive);
+    EXPECT_EQ(r.choosy.penalty, 0.5f);
+    EXPECT_EQ(r.choosy.isotropic, 0);
+    EXPECT_EQ(r.choosy.dims, 12);
+    EXPECT_EQ(r.choosy.eps, 0.25f);
+    EXPECT_TRUE(r.validate(error)) << error;
+    EXPECT_NE(recipe_to_json(r, "").find("\"iterations\": \"1,8\""), std::string::npos);
+    // The pyramid's iterations stay an integer.
+    EXPECT_FALSE(parse_recipe(R"({ "sample": "g.png", "iterations": [1, 8] })", "", r, error));
+    EXPECT_TRUE(parse_recipe(
+        R"({ "sample": "g.png", "method": "choosy", "iterations": "1,2,3", "levels": 2 })", "", r,
+        error));
+    EXPECT_FALSE(r.validate(error));
+    EXPECT_EQ(error, "iterations=1,2,3 has 3 values for levels=2 (give 1..2)");
+    ASSERT_TRUE(apply_recipe_arguments("iterations=2&method=choosy&isotropic=0", "", r, error))
+        << error;
+    EXPECT_EQ(r.choosy.iterations, (std::vector<int> { 2 }));
 }
 
 TEST(Recipe, KeysOfAnotherMethodAreRefusedByName)
@@ -386,32 +422,37 @@ TEST(Recipe, TheSchemaAgreesWithTheOptionTables)
     std::vector<std::string> methods;
     detail::for_each_recipe_method([&](const char* method, auto member) {
         methods.push_back(method);
+        // An option several methods have is defined once; a method's branch may narrow it.
+        const nlohmann::json* branch = nullptr;
+        for (const nlohmann::json& b : schema.at("allOf"))
+            if (b.at("if").at("properties").at("method").at("const") == method)
+                branch = &b.at("then");
+        ASSERT_TRUE(branch) << "no allOf branch for method " << method;
         std::vector<std::string> keys = recipe_keys;
         for (const auto& f : detail::table_of(member).fields()) {
             keys.push_back(f.name);
             ASSERT_TRUE(properties.contains(f.name)) << method << " option " << f.name;
-            const nlohmann::json& p = properties.at(f.name);
+            const nlohmann::json& p
+                = branch->contains("properties") && branch->at("properties").contains(f.name)
+                ? branch->at("properties").at(f.name)
+                : properties.at(f.name);
             if (f.type == OptionType::Choice) {
                 std::vector<std::string> choices;
                 std::stringstream allowed(f.allowed);
                 for (std::string c; std::getline(allowed, c, '|');)
                     choices.push_back(c);
-                EXPECT_EQ(p.at("enum").get<std::vector<std::string>>(), choices) << f.name;
+                EXPECT_EQ(p.at("enum").get<std::vector<std::string>>(), choices)
+                    << method << " " << f.name;
             } else if (f.type == OptionType::Integer || f.type == OptionType::Real) {
                 const std::string range = f.allowed.substr(0, f.allowed.find('|')); // "lo..hi"
                 const size_t dots = range.find("..");
-                EXPECT_EQ(p.at("minimum").dump(), range.substr(0, dots)) << f.name;
-                EXPECT_EQ(p.at("maximum").dump(), range.substr(dots + 2)) << f.name;
+                EXPECT_EQ(p.at("minimum").dump(), range.substr(0, dots)) << method << " " << f.name;
+                EXPECT_EQ(p.at("maximum").dump(), range.substr(dots + 2))
+                    << method << " " << f.name;
             }
         }
-        bool found = false;
-        for (const nlohmann::json& branch : schema.at("allOf"))
-            if (branch.at("if").at("properties").at("method").at("const") == method) {
-                found = true;
-                auto names = branch.at("then").at("propertyNames").at("enum");
-                EXPECT_EQ(names.get<std::vector<std::string>>(), keys) << method;
-            }
-        EXPECT_TRUE(found) << "no allOf branch for method " << method;
+        auto names = branch->at("propertyNames").at("enum");
+        EXPECT_EQ(names.get<std::vector<std::string>>(), keys) << method;
     });
     EXPECT_EQ(properties.at("method").at("enum").get<std::vector<std::string>>(), methods);
 }
