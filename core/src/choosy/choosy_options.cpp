@@ -74,9 +74,21 @@ bool ChoosyOptions::validate(std::string& error) const
                 + " is out of range (1.." + std::to_string(kMaxIterations) + ")";
             return false;
         }
-    if (!(penalty >= 0.0f && penalty <= kMaxPenalty) || (isotropic != 0 && isotropic != 1)
-        || dims < 1 || !(eps >= 0.0f && eps <= 100.0f)) {
-        error = "penalty, isotropic, dims or eps is out of range (see --help)";
+    if (!(penalty >= 0.0f && penalty <= kMaxPenalty)) {
+        error = "penalty=" + std::to_string(penalty) + " is out of range (0.."
+            + std::to_string(int(kMaxPenalty)) + ")";
+        return false;
+    }
+    if (isotropic != 0 && isotropic != 1) {
+        error = "isotropic=" + std::to_string(isotropic) + " is not 0 or 1";
+        return false;
+    }
+    if (dims < 1 || dims > 4096) {
+        error = "dims=" + std::to_string(dims) + " is out of range (1..4096)";
+        return false;
+    }
+    if (!(eps >= 0.0f && eps <= 100.0f)) {
+        error = "eps=" + std::to_string(eps) + " is out of range (0..100)";
         return false;
     }
     return true;

@@ -24,7 +24,7 @@ bool apply(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf&
     const OIIO::ImageSpec& ms = map.spec();
     if (ms.nchannels != 2 || ms.depth > 1) {
         dst.errorfmt("the source map has {} channels; expected 2 (x, y) as "
-                     "--neighborhood:map= writes",
+                     "--neighborhood:map= and --choosy:map= write",
             ms.nchannels);
         return false;
     }
