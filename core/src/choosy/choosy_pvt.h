@@ -83,8 +83,8 @@ public:
     virtual void record(uint32_t point) = 0;
     /// Every use count back to 0 (a new pass).
     virtual void reset() = 0;
-    /// The end of a round of records: deferred work (moving points between trees) is done.
-    /// choose() is exact at any time; this keeps it fast.
+    /// The end of a round of records: deferred work (moving points between trees) may be
+    /// done. choose() is exact at any time; this keeps it fast.
     virtual void settle() { }
     virtual const UseCounts& counts() const = 0;
 
