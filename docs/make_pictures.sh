@@ -116,5 +116,19 @@ oiiotool "$samples/bricks.png" --chsum:weight=0.3,0.6,0.1 -o "$out/nb_height.png
 oiiotool "$out/nb_colour.png" "$out/nb_height_big.png" --ch 0,0,0 --mosaic:pad=4 2x1 \
     -o "$out/neighborhood_apply_map.png"
 rm -f "$out"/nb_*
+# docs/choosy.md: choosy sampling against greedy selection on flowers, isotropic=0 and 1 on
+# wood grain, and one pass per level against iterations=1,8 (seed 1).
+"$texsyn" --seed 1 "$samples/flowers.png" --choosy:size=256x256 -o "$out/ch_choosy.png"
+"$texsyn" --seed 1 "$samples/flowers.png" --choosy:size=256x256:penalty=0 -o "$out/ch_greedy.png"
+"$texsyn" --seed 1 "$samples/flowers.png" --choosy:size=256x256:iterations=1,8 -o "$out/ch_iter.png"
+oiiotool "$samples/flowers.png" --resize 256x256 "$out/ch_choosy.png" "$out/ch_greedy.png" \
+    --mosaic:pad=4 3x1 -o "$out/choosy_flowers_greedy.png"
+oiiotool "$out/ch_choosy.png" "$out/ch_iter.png" --mosaic:pad=4 2x1 -o "$out/choosy_flowers_iterations.png"
+for iso in 0 1; do
+  "$texsyn" --seed 1 "$samples/wood_grain.png" --choosy:size=128x128:isotropic=$iso -o "$out/ch_iso$iso.png"
+done
+oiiotool "$samples/wood_grain.png" "$out/ch_iso0.png" "$out/ch_iso1.png" --mosaic:pad=4 3x1 \
+    -o "$out/choosy_wood_isotropic.png"
+rm -f "$out"/ch_*
 rm -f "$out/stucco_tile.png" "$out/rust.tsa"
 ls -la "$out"
