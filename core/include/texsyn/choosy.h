@@ -46,7 +46,7 @@ struct ChoosyOptions {
     ChoosySearch search = ChoosySearch::KdTree;
     int dims = 20; ///< kdtree: principal components kept (>= the vector size: all, exact)
     /// kdtree: nanoflann's approximation factor (0 = exact in PCA space). 30 was measured
-    /// about 4x faster than 0 with the same histogram match and look (docs/choosy.md).
+    /// 4x faster than 0 with the same histogram match and look (docs/choosy.md).
     float eps = 30.0f;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result

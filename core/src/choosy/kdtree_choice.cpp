@@ -125,10 +125,11 @@ public:
 
     void settle() override
     {
-        // Moving points costs tree rebuilds; waiting until an eighth of the sites have moved
-        // (or 256) rebuilds in larger batches (measured: a third less time moving points
-        // than settling every round, on C3) while the searches stay exact.
-        if (m_pending.size() < std::max<size_t>(kMinSettle, m_counts.sites() / 8))
+        // Moving points costs tree rebuilds; waiting until half the sites have been chosen
+        // (or 256) rebuilds in larger batches while the searches stay exact. Measured on
+        // C3 (2 threads, eps=30): waiting for 1/8 of the sites 5.9-6.2 s, 1/4 5.3-5.5 s,
+        // 1/2 4.9-5.1 s, all of them 6.8 s (stale trees slow the searches); bench/README.md.
+        if (m_pending.size() < std::max<size_t>(kMinSettle, m_counts.sites() / 2))
             return;
         // Each pending site's points leave their tree for the tree of their count now.
         std::vector<std::vector<uint32_t>> arriving;
