@@ -38,6 +38,18 @@ bool parse_int_list_option(std::string_view name, std::string_view text, int lo,
 /// "a,b,c".
 std::string format_int_list(const std::vector<int>& values);
 
+/// False with "size=WxH is out of range (each side 1..max_side)" unless width and height
+/// are both 0 (the default: the sample's size) or each in 1..max_side.
+bool check_size_range(int width, int height, int max_side, std::string& error);
+
+/// False with "<name>=<value> is out of range (lo..hi)" unless lo <= value <= hi.
+bool check_int_range(std::string_view name, int value, int lo, int hi, std::string& error);
+
+/// False with "<name>=a,b,c has 3 values for levels=2 (give 1..2)" unless `values` holds
+/// 1..levels values (a per-level list, finest first).
+bool check_level_list(
+    std::string_view name, const std::vector<int>& values, int levels, std::string& error);
+
 /// The kind of value an option takes: how a recipe's JSON may write it (docs/recipes.md).
 enum class OptionType {
     Integer,  ///< "3" or 3 (an optional integer also "none")

@@ -14,6 +14,7 @@ constexpr int kMaxSide = 65536; // per side of the output; memory refuses far le
 constexpr int kMaxLevels = 8;
 constexpr int kMaxIterations = 64;
 constexpr float kMaxPenalty = 16.0f;
+constexpr int kMaxDims = 4096;
 } // namespace
 
 const OptionTable<ChoosyOptions>& ChoosyOptions::table()
@@ -39,7 +40,7 @@ const OptionTable<ChoosyOptions>& ChoosyOptions::table()
             { { "exhaustive", ChoosySearch::Exhaustive }, { "kdtree", ChoosySearch::KdTree } },
             "exhaustive (every neighbourhood, full dimension, exact) or kdtree (principal "
             "components in a set of dynamic kd-trees, one per use count)");
-        t.integer("dims", &O::dims, 1, 4096,
+        t.integer("dims", &O::dims, 1, kMaxDims,
             "kdtree: principal components kept (24 x channels or more = all: exact)");
         t.real("eps", &O::eps, 0.0f, 100.0f,
             "kdtree: approximation factor (a match's squared distance in PCA space may be "
@@ -51,23 +52,10 @@ const OptionTable<ChoosyOptions>& ChoosyOptions::table()
 
 bool ChoosyOptions::validate(std::string& error) const
 {
-    const bool zero = width == 0 && height == 0;
-    if (!zero && (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)) {
-        error = "size=" + std::to_string(width) + "x" + std::to_string(height)
-            + " is out of range (each side 1.." + std::to_string(kMaxSide) + ")";
+    if (!check_size_range(width, height, kMaxSide, error)
+        || !check_int_range("levels", levels, 1, kMaxLevels, error)
+        || !check_level_list("iterations", iterations, levels, error))
         return false;
-    }
-    if (levels < 1 || levels > kMaxLevels) {
-        error = "levels=" + std::to_string(levels) + " is out of range (1.."
-            + std::to_string(kMaxLevels) + ")";
-        return false;
-    }
-    if (iterations.empty() || int(iterations.size()) > levels) {
-        error = "iterations=" + format_int_list(iterations) + " has "
-            + std::to_string(iterations.size()) + " values for levels=" + std::to_string(levels)
-            + " (give 1.." + std::to_string(levels) + ")";
-        return false;
-    }
     for (int v : iterations)
         if (v < 1 || v > kMaxIterations) {
             error = "iterations=" + format_int_list(iterations) + ": " + std::to_string(v)
@@ -79,14 +67,9 @@ bool ChoosyOptions::validate(std::string& error) const
             + std::to_string(int(kMaxPenalty)) + ")";
         return false;
     }
-    if (isotropic != 0 && isotropic != 1) {
-        error = "isotropic=" + std::to_string(isotropic) + " is not 0 or 1";
+    if (!check_int_range("isotropic", isotropic, 0, 1, error)
+        || !check_int_range("dims", dims, 1, kMaxDims, error))
         return false;
-    }
-    if (dims < 1 || dims > 4096) {
-        error = "dims=" + std::to_string(dims) + " is out of range (1..4096)";
-        return false;
-    }
     if (!(eps >= 0.0f && eps <= 100.0f)) {
         error = "eps=" + std::to_string(eps) + " is out of range (0..100)";
         return false;

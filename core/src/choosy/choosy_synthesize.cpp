@@ -115,20 +115,10 @@ std::unique_ptr<detail::ChoiceIndex> make_index(
 bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyOptions& opt,
     OIIO::ImageBuf* source_map)
 {
-    std::string error;
-    if (!opt.validate(error)) {
-        dst.errorfmt("{}", error);
-        return false;
-    }
-    if (sample.has_error()) {
-        dst.errorfmt("sample: {}", sample.geterror());
-        return false;
-    }
     PlanarImage in;
-    if (!planes_from_imagebuf(sample, in, error)) {
-        dst.errorfmt("{}", error);
+    if (!detail::validated_sample(dst, sample, opt, in))
         return false;
-    }
+    std::string error;
     const int unit = 1 << (opt.levels - 1);
     const int sw = in.width(), sh = in.height();
     const int cw = std::max(sw / unit * unit, 1), chh = std::max(sh / unit * unit, 1);
@@ -178,26 +168,12 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyO
         }
     }
 
-    const bool unassociated = sample.spec().get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
-    PlanarImage result;
-    result.channels = out.gaussian;
-    result.channel_names = in.channel_names;
-    result.alpha_channel = in.alpha_channel;
-    imagebuf_from_planes(result, dst, !unassociated);
     ChoosyOptions resolved = opt;
     resolved.width = w;
     resolved.height = h;
-    auto tag = [&](OIIO::ImageSpec& spec) {
-        spec.attribute("synth:version", version());
-        spec.attribute("synth:method", "choosy");
-        spec.attribute("synth:seed", int(opt.seed));
-        spec.attribute("synth:options", ChoosyOptions::table().format(resolved));
-    };
-    tag(dst.specmod());
-    if (source_map) {
+    if (source_map)
         detail::write_source_map(*source_map, out.source, w, h, cw, sw, sh);
-        tag(source_map->specmod());
-    }
+    detail::write_synthesis(dst, out.gaussian, in, sample, "choosy", resolved, source_map);
     return true;
 }
 

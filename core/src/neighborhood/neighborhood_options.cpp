@@ -59,23 +59,10 @@ const OptionTable<NeighborhoodOptions>& NeighborhoodOptions::table()
 
 bool NeighborhoodOptions::validate(std::string& error) const
 {
-    const bool zero = width == 0 && height == 0;
-    if (!zero && (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)) {
-        error = "size=" + std::to_string(width) + "x" + std::to_string(height)
-            + " is out of range (each side 1.." + std::to_string(kMaxSide) + ")";
+    if (!check_size_range(width, height, kMaxSide, error)
+        || !check_int_range("levels", levels, 1, kMaxLevels, error)
+        || !check_level_list("n", n, levels, error))
         return false;
-    }
-    if (levels < 1 || levels > kMaxLevels) {
-        error = "levels=" + std::to_string(levels) + " is out of range (1.."
-            + std::to_string(kMaxLevels) + ")";
-        return false;
-    }
-    if (n.empty() || int(n.size()) > levels) {
-        error = "n=" + format_int_list(n) + " has " + std::to_string(n.size())
-            + " values for levels=" + std::to_string(levels) + " (give 1.." + std::to_string(levels)
-            + ")";
-        return false;
-    }
     for (int v : n)
         if (v < 3 || v > kMaxN || v % 2 == 0) {
             error = "n=" + format_int_list(n) + " : " + std::to_string(v)

@@ -256,20 +256,10 @@ bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
 bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const NeighborhoodOptions& opt,
     OIIO::ImageBuf* source_map)
 {
-    std::string error;
-    if (!opt.validate(error)) {
-        dst.errorfmt("{}", error);
-        return false;
-    }
-    if (sample.has_error()) {
-        dst.errorfmt("sample: {}", sample.geterror());
-        return false;
-    }
     PlanarImage in;
-    if (!planes_from_imagebuf(sample, in, error)) {
-        dst.errorfmt("{}", error);
+    if (!detail::validated_sample(dst, sample, opt, in))
         return false;
-    }
+    std::string error;
     const int sw = in.width(), sh = in.height();
     const int w = opt.width ? opt.width : sw, h = opt.height ? opt.height : sh;
     if (!check_sizes(sw, sh, w, h, opt, error)
@@ -302,26 +292,13 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Neighbo
         coarser = std::move(out);
     }
 
-    const bool unassociated = sample.spec().get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
-    PlanarImage result;
-    result.channels = coarser.live.channels;
-    result.channel_names = in.channel_names;
-    result.alpha_channel = in.alpha_channel;
-    imagebuf_from_planes(result, dst, !unassociated);
     NeighborhoodOptions resolved = opt;
     resolved.width = w;
     resolved.height = h;
-    auto tag = [&](OIIO::ImageSpec& spec) {
-        spec.attribute("synth:version", version());
-        spec.attribute("synth:method", "neighborhood");
-        spec.attribute("synth:seed", int(opt.seed));
-        spec.attribute("synth:options", NeighborhoodOptions::table().format(resolved));
-    };
-    tag(dst.specmod());
-    if (source_map) {
+    if (source_map)
         detail::write_source_map(*source_map, coarser.live.source, w, h, sw, sw, sh);
-        tag(source_map->specmod());
-    }
+    detail::write_synthesis(
+        dst, coarser.live.channels, in, sample, "neighborhood", resolved, source_map);
     return true;
 }
 

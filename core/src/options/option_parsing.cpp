@@ -189,4 +189,35 @@ bool split_option_string(std::string_view text,
     return true;
 }
 
+bool check_size_range(int width, int height, int max_side, std::string& error)
+{
+    if (width == 0 && height == 0)
+        return true;
+    if (width >= 1 && height >= 1 && width <= max_side && height <= max_side)
+        return true;
+    error = "size=" + std::to_string(width) + "x" + std::to_string(height)
+        + " is out of range (each side 1.." + std::to_string(max_side) + ")";
+    return false;
+}
+
+bool check_int_range(std::string_view name, int value, int lo, int hi, std::string& error)
+{
+    if (value >= lo && value <= hi)
+        return true;
+    error = std::string(name) + "=" + std::to_string(value) + " is out of range ("
+        + std::to_string(lo) + ".." + std::to_string(hi) + ")";
+    return false;
+}
+
+bool check_level_list(
+    std::string_view name, const std::vector<int>& values, int levels, std::string& error)
+{
+    if (!values.empty() && int(values.size()) <= levels)
+        return true;
+    error = std::string(name) + "=" + format_int_list(values) + " has "
+        + std::to_string(values.size()) + " values for levels=" + std::to_string(levels)
+        + " (give 1.." + std::to_string(levels) + ")";
+    return false;
+}
+
 } // namespace texsyn

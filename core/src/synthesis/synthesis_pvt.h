@@ -52,6 +52,55 @@ OIIO::ImageBuf value_form(const char* name, F&& f)
     return result;
 }
 
+/// The start of every synthesis from one sample: opt.validate(), then the sample's planes
+/// (planes_from_imagebuf: a read error, NaN or Inf is refused). False with the message in
+/// dst.
+template <class Options>
+bool validated_sample(
+    OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Options& opt, PlanarImage& in)
+{
+    std::string error;
+    if (!opt.validate(error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+    if (sample.has_error()) {
+        dst.errorfmt("sample: {}", sample.geterror());
+        return false;
+    }
+    if (!planes_from_imagebuf(sample, in, error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+    return true;
+}
+
+/// The end of a copying synthesis (neighbourhood, choosy): dst gets `channels` with the
+/// sample's channel names, alpha and alpha association (`in` read from `sample`), and the
+/// tags synth:version, synth:method, synth:seed and synth:options (`resolved`, the options
+/// with the output size filled in); so does `source_map` if not null.
+template <class Options>
+void write_synthesis(OIIO::ImageBuf& dst, std::vector<Plane> channels, const PlanarImage& in,
+    const OIIO::ImageBuf& sample, const char* method, const Options& resolved,
+    OIIO::ImageBuf* source_map)
+{
+    const bool unassociated = sample.spec().get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
+    PlanarImage result;
+    result.channels = std::move(channels);
+    result.channel_names = in.channel_names;
+    result.alpha_channel = in.alpha_channel;
+    imagebuf_from_planes(result, dst, !unassociated);
+    auto tag = [&](OIIO::ImageSpec& spec) {
+        spec.attribute("synth:version", version());
+        spec.attribute("synth:method", method);
+        spec.attribute("synth:seed", int(resolved.seed));
+        spec.attribute("synth:options", Options::table().format(resolved));
+    };
+    tag(dst.specmod());
+    if (source_map)
+        tag(source_map->specmod());
+}
+
 /// "1 channel", "3 channels".
 std::string count_text(int n, const std::string& noun);
 
