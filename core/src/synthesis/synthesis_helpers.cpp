@@ -10,6 +10,15 @@
 
 namespace texsyn::detail {
 
+void tag_synthesis(
+    OIIO::ImageSpec& spec, const char* method, uint64_t seed, const std::string& options)
+{
+    spec.attribute("synth:version", version());
+    spec.attribute("synth:method", method);
+    spec.attribute("synth:seed", int(seed));
+    spec.attribute("synth:options", options);
+}
+
 std::string count_text(int n, const std::string& noun)
 {
     return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");

@@ -75,6 +75,10 @@ bool validated_sample(
     return true;
 }
 
+/// Sets synth:version, synth:method, synth:seed and synth:options (the options' text).
+void tag_synthesis(
+    OIIO::ImageSpec& spec, const char* method, uint64_t seed, const std::string& options);
+
 /// The end of a copying synthesis (neighbourhood, choosy): dst gets `channels` with the
 /// sample's channel names, alpha and alpha association (`in` read from `sample`), and the
 /// tags synth:version, synth:method, synth:seed and synth:options (`resolved`, the options
@@ -90,15 +94,10 @@ void write_synthesis(OIIO::ImageBuf& dst, std::vector<Plane> channels, const Pla
     result.channel_names = in.channel_names;
     result.alpha_channel = in.alpha_channel;
     imagebuf_from_planes(result, dst, !unassociated);
-    auto tag = [&](OIIO::ImageSpec& spec) {
-        spec.attribute("synth:version", version());
-        spec.attribute("synth:method", method);
-        spec.attribute("synth:seed", int(resolved.seed));
-        spec.attribute("synth:options", Options::table().format(resolved));
-    };
-    tag(dst.specmod());
+    const std::string options = Options::table().format(resolved);
+    tag_synthesis(dst.specmod(), method, resolved.seed, options);
     if (source_map)
-        tag(source_map->specmod());
+        tag_synthesis(source_map->specmod(), method, resolved.seed, options);
 }
 
 /// "1 channel", "3 channels".

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: Apache-2.0
+// Iterated nonlinear maps and convolution with a multiscale cascade
+// (../shared/papers/nonlinear-maps-convolution-cascade.txt): A(i+1) = p(N(A(i))) on a
+// lattice, N a small circular convolution, p a pointwise map of [0, 1], a few iterations.
+//
+// Same conventions as synthesis.h: ImageBufAlgo-style two forms, errors in dst, float in
+// and out, bit-identical for a seed whatever nthreads is.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <texsyn/options.h>
+
+namespace texsyn {
+
+/// The pointwise maps p of [0, 1] into [0, 1]; r in [0, 4] sets the peak value r/4.
+enum class CascadeMap {
+    Logistic, ///< r x (1 - x)
+    Sine,     ///< r/4 sin(pi x)
+    Tent,     ///< r/4 (1 - |2x - 1|)
+    Cubic,    ///< r (3 sqrt 3 / 8) x (1 - x^2): peak r/4 at x = 1/sqrt 3
+    Curve,    ///< piecewise linear through the `curve` points (r unused)
+};
+
+/// The convolution kernels N (at most 7x7; normalised to sum 1).
+enum class CascadeKernel {
+    Box3,
+    Box5,
+    Box7, ///< uniform
+    Gauss3,
+    Gauss5,
+    Gauss7, ///< Gaussian, sigma = size / 4
+    Dog5,
+    Dog7, ///< difference of Gaussians (Mexican hat): 2 G(size/6) - G(size/3)
+    Aniso5,
+    Aniso7, ///< Gaussian with sigmas size/3 and size/10 along `angle`
+    Custom, ///< `weights`: ksize x ksize values, row by row
+};
+
+/// How an input image becomes the initial lattice (the paper's (D), texture transfer).
+enum class CascadeTransfer {
+    Luminance, ///< one lattice, the image's luminance (Rec. 709 weights), clamped to [0, 1]
+    Channels,  ///< one lattice per channel, each clamped to [0, 1]
+};
+
+/// Options of the cascade. Per-level lists run coarsest level first (level 0 is the
+/// coarsest); levels missing from a list repeat its last value.
+struct CascadeOptions {
+    int width = 512; ///< output size (the finest level)
+    int height = 512;
+    int levels = 1; ///< cascade levels; level l is the output halved levels-1-l times
+    std::vector<int> iterations = { 5 }; ///< per level
+    CascadeMap map = CascadeMap::Logistic;
+    std::vector<float> r = { 3.9f }; ///< per level
+    std::vector<float> curve;        ///< map=curve: x0,y0,x1,y1,… with x increasing in [0, 1]
+    CascadeKernel kernel = CascadeKernel::Gauss5;
+    float angle = 0.0f;                  ///< aniso kernels: degrees from the x axis
+    int ksize = 3;                       ///< kernel=custom: side (odd, 1..7)
+    std::vector<float> weights;          ///< kernel=custom: ksize^2 weights, normalised
+    std::vector<float> noise = { 0.0f }; ///< per level > 0: weight of fresh noise mixed in
+    float dmin = 1.0f;                   ///< dilation at control value 0
+    float dmax = 1.0f;                   ///< dilation at control value 1
+    CascadeTransfer transfer = CascadeTransfer::Luminance;
+    /// A colour ramp: r,g,b triples (scene-linear), evenly spaced stops from value 0 to 1;
+    /// empty = the lattice itself, one channel "Y".
+    std::vector<float> ramp;
+    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
+    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
+
+    /// The table behind `--cascade:name=value`, synth:options and the docs.
+    static const OptionTable<CascadeOptions>& table();
+
+    /// Checks the options alone (ranges, list lengths, the curve, custom weights). False
+    /// with a message.
+    bool validate(std::string& error) const;
+};
+
+/// The cascade. Level 0 (the coarsest) starts as seeded uniform noise, or as `initial`
+/// (resized to that level; see CascadeTransfer) when it is not null; every level then runs
+/// its iterations of A <- p(N(A)) with circular convolution, so the output tiles; each
+/// later level starts as the previous level upsampled (the (1,4,6,4,1) expand, circular)
+/// mixed with fresh noise by its `noise` weight. With `dilation` (a one-channel control
+/// image, resized to each level, values clamped to [0, 1]) the kernel's taps are spread by
+/// dmin + c (dmax - dmin) pixels at each pixel, sampled bilinearly; dilation 1 everywhere
+/// is exactly the undilated operator. The result is the last level, mapped through `ramp`
+/// if given.
+/// Fails (false, message in dst) on invalid options, an `initial` or `dilation` image with
+/// an error, NaN/Inf or (dilation) more than one channel, or an output that would need
+/// more memory than the machine has.
+bool cascade_synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt,
+    const OIIO::ImageBuf* initial = nullptr, const OIIO::ImageBuf* dilation = nullptr);
+OIIO::ImageBuf cascade_synthesize(const CascadeOptions& opt,
+    const OIIO::ImageBuf* initial = nullptr, const OIIO::ImageBuf* dilation = nullptr);
+
+} // namespace texsyn

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: Apache-2.0
+// The cascade's options: table and validation.
+#include <texsyn/cascade.h>
+
+#include <cmath>
+
+namespace texsyn {
+
+namespace {
+constexpr int kMaxSide = 65536;
+constexpr int kMaxLevels = 12;
+constexpr int kMaxIterations = 100;
+constexpr size_t kMaxRampStops = 64;
+} // namespace
+
+const OptionTable<CascadeOptions>& CascadeOptions::table()
+{
+    using O = CascadeOptions;
+    using K = CascadeKernel;
+    static const OptionTable<O> t = [] {
+        OptionTable<O> t;
+        t.size("size", &O::width, &O::height, kMaxSide, "", "output size WxH");
+        t.integer("levels", &O::levels, 1, kMaxLevels,
+            "cascade levels, coarsest first; each doubles the size (1 = a single level)");
+        t.integers("iterations", &O::iterations, 1, kMaxIterations, size_t(kMaxLevels),
+            "iterations of A <- p(N(A)) per level, coarsest first (a missing level repeats the "
+            "last value)");
+        t.choice("map", &O::map,
+            { { "logistic", CascadeMap::Logistic }, { "sine", CascadeMap::Sine },
+                { "tent", CascadeMap::Tent }, { "cubic", CascadeMap::Cubic },
+                { "curve", CascadeMap::Curve } },
+            "the pointwise map p: logistic r x(1-x), sine r/4 sin(pi x), tent r/4 (1-|2x-1|), "
+            "cubic (peak r/4), or curve (piecewise linear through `curve`)");
+        t.numbers("r", &O::r, 0.0f, 4.0f, size_t(kMaxLevels), "none",
+            "the map's parameter per level, coarsest first: its peak value is r/4");
+        t.numbers("curve", &O::curve, 0.0f, 1.0f, 64, "none",
+            "map=curve: x0,y0,x1,y1,... with x increasing (at least 2 points)");
+        t.choice("kernel", &O::kernel,
+            { { "box3", K::Box3 }, { "box5", K::Box5 }, { "box7", K::Box7 },
+                { "gauss3", K::Gauss3 }, { "gauss5", K::Gauss5 }, { "gauss7", K::Gauss7 },
+                { "dog5", K::Dog5 }, { "dog7", K::Dog7 }, { "aniso5", K::Aniso5 },
+                { "aniso7", K::Aniso7 }, { "custom", K::Custom } },
+            "the convolution N: box, Gaussian (sigma size/4), dog (Mexican hat), aniso "
+            "(Gaussian stretched along `angle`) of side 3, 5 or 7, or custom (`weights`)");
+        t.real("angle", &O::angle, -360.0f, 360.0f, "aniso kernels: direction in degrees");
+        t.integer("ksize", &O::ksize, 1, 7, "kernel=custom: side of the kernel (odd)");
+        t.numbers("weights", &O::weights, -100.0f, 100.0f, 49, "none",
+            "kernel=custom: ksize x ksize weights, row by row (normalised to sum 1)");
+        t.numbers("noise", &O::noise, 0.0f, 1.0f, size_t(kMaxLevels), "none",
+            "per level after the first, coarsest first: weight of fresh noise mixed into the "
+            "upsampled previous level");
+        t.real("dmin", &O::dmin, 0.0f, 16.0f, "kernel dilation where the control image is 0");
+        t.real("dmax", &O::dmax, 0.0f, 16.0f, "kernel dilation where the control image is 1");
+        t.choice("transfer", &O::transfer,
+            { { "luminance", CascadeTransfer::Luminance },
+                { "channels", CascadeTransfer::Channels } },
+            "with an input image: its luminance or each of its channels is the initial "
+            "lattice");
+        t.numbers("ramp", &O::ramp, 0.0f, 1000.0f, kMaxRampStops * 3, "none",
+            "colour ramp: r,g,b triples (scene-linear), evenly spaced from value 0 to 1 "
+            "(default: the grey lattice, one channel)");
+        return t;
+    }();
+    return t;
+}
+
+bool CascadeOptions::validate(std::string& error) const
+{
+    if (width == 0 || height == 0) {
+        error = "size=" + std::to_string(width) + "x" + std::to_string(height)
+            + " is out of range (each side 1.." + std::to_string(kMaxSide) + ")";
+        return false;
+    }
+    if (!check_size_range(width, height, kMaxSide, error)
+        || !check_int_range("levels", levels, 1, kMaxLevels, error)
+        || !check_level_list("iterations", iterations, levels, error))
+        return false;
+    auto per_level = [&](const char* name, const std::vector<float>& v) {
+        if (!v.empty() && int(v.size()) <= levels)
+            return true;
+        error = std::string(name) + "=" + format_number_list(v) + " has " + std::to_string(v.size())
+            + " values for levels=" + std::to_string(levels) + " (give 1.." + std::to_string(levels)
+            + ")";
+        return false;
+    };
+    if (!per_level("r", r) || !per_level("noise", noise))
+        return false;
+    if (map == CascadeMap::Curve) {
+        if (curve.size() < 4 || curve.size() % 2 != 0) {
+            error = "map=curve needs curve=x0,y0,x1,y1,... with at least 2 points (got "
+                + std::to_string(curve.size()) + " values)";
+            return false;
+        }
+        for (size_t k = 2; k < curve.size(); k += 2)
+            if (!(curve[k] > curve[k - 2])) {
+                error = "curve=" + format_number_list(curve) + ": x must increase";
+                return false;
+            }
+    }
+    if (kernel == CascadeKernel::Custom) {
+        if (ksize % 2 == 0) {
+            error = "ksize=" + std::to_string(ksize) + " is not odd";
+            return false;
+        }
+        if (weights.size() != size_t(ksize * ksize)) {
+            error = "kernel=custom with ksize=" + std::to_string(ksize) + " needs "
+                + std::to_string(ksize * ksize) + " weights (got " + std::to_string(weights.size())
+                + ")";
+            return false;
+        }
+        double sum = 0;
+        for (float w : weights)
+            sum += w;
+        if (std::abs(sum) < 1e-6) {
+            error = "weights=" + format_number_list(weights)
+                + " sum to 0 (they are normalised "
+                  "to sum 1)";
+            return false;
+        }
+    }
+    if (!ramp.empty() && (ramp.size() % 3 != 0 || ramp.size() < 6)) {
+        error = "ramp=" + format_number_list(ramp)
+            + " needs r,g,b triples, at least two colours (got " + std::to_string(ramp.size())
+            + " values)";
+        return false;
+    }
+    return true;
+}
+
+} // namespace texsyn

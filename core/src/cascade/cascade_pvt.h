@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: Apache-2.0
+// The pieces of the cascade (cascade.h): maps, kernels, the convolution.
+#pragma once
+
+#include <vector>
+
+#include <texsyn/cascade.h>
+#include <texsyn/image.h>
+
+namespace texsyn::detail {
+
+/// p(x) for one map, clamped to [0, 1] (x is clamped first). `curve` is the map=curve points.
+float cascade_map_value(CascadeMap map, float r, const std::vector<float>& curve, float x);
+
+/// Applies cascade_map_value to every value of `plane`.
+void apply_cascade_map(
+    Plane& plane, CascadeMap map, float r, const std::vector<float>& curve, int nthreads);
+
+/// A square kernel: size x size weights, row by row, summing to 1.
+struct CascadeKernelWeights {
+    int size = 1;
+    std::vector<float> weights;
+    float at(int i, int j) const { return weights[size_t(j) * size_t(size) + size_t(i)]; }
+};
+
+/// The kernel the options name (presets, or kernel=custom's normalised weights).
+CascadeKernelWeights cascade_kernel(const CascadeOptions& opt);
+
+/// out = N(in), circular: out(x, y) = sum_ij w(i, j) in(x + i - h, y + j - h), h = size / 2.
+/// Each row is a sum of shifted rows, so it vectorises; parallel over rows.
+void convolve_circular(const Plane& in, const CascadeKernelWeights& k, Plane& out, int nthreads);
+
+/// The dilated convolution: tap (i, j) of pixel (x, y) is read at (x, y) + d(x, y) (i - h,
+/// j - h), bilinearly and circularly, with d = dilation(x, y) (>= 0). d = 1 everywhere gives
+/// exactly convolve_circular's result.
+void convolve_dilated(const Plane& in, const CascadeKernelWeights& k, const Plane& dilation,
+    Plane& out, int nthreads);
+
+} // namespace texsyn::detail

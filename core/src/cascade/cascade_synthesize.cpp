@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: Apache-2.0
+// The multiscale cascade of iterated maps and convolutions (cascade.h).
+#include <texsyn/cascade.h>
+
+#include <algorithm>
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <texsyn/pyramid.h>
+
+#include "cascade_pvt.h"
+#include "synthesis/synthesis_pvt.h"
+
+namespace texsyn {
+
+namespace {
+
+struct Size {
+    int w = 0, h = 0;
+};
+
+// Level sizes, coarsest first: the output halved (rounding up) levels-1-l times.
+std::vector<Size> level_sizes(const CascadeOptions& opt)
+{
+    std::vector<Size> sizes(size_t(opt.levels));
+    sizes.back() = { opt.width, opt.height };
+    for (size_t l = sizes.size() - 1; l-- > 0;)
+        sizes[l] = { (sizes[l + 1].w + 1) / 2, (sizes[l + 1].h + 1) / 2 };
+    return sizes;
+}
+
+template <class T>
+T at_level(const std::vector<T>& v, int level)
+{
+    return v[size_t(std::min<int>(level, int(v.size()) - 1))];
+}
+
+// `image` resampled to w x h (OIIO's default filter) as planes; false with a message.
+bool planes_at(const OIIO::ImageBuf& image, Size s, PlanarImage& out, std::string& error)
+{
+    OIIO::ImageBuf resized = image;
+    const OIIO::ImageSpec& spec = image.spec();
+    if (spec.width != s.w || spec.height != s.h)
+        resized = OIIO::ImageBufAlgo::resize(
+            image, "", 0.0f, OIIO::ROI(0, s.w, 0, s.h, 0, 1, 0, spec.nchannels));
+    return planes_from_imagebuf(resized, out, error);
+}
+
+// The initial lattices of level 0 from an input image, clamped to [0, 1].
+std::vector<Plane> initial_lattices(const PlanarImage& image, CascadeTransfer transfer)
+{
+    std::vector<Plane> lattices;
+    if (transfer == CascadeTransfer::Channels || image.channels.size() < 3) {
+        lattices = transfer == CascadeTransfer::Channels ? image.channels
+                                                         : std::vector<Plane> { image.channels[0] };
+    } else {
+        Plane y(image.width(), image.height());
+        for (size_t i = 0; i < y.size(); ++i)
+            y.data()[i] = 0.2126f * image.channels[0].data()[i]
+                + 0.7152f * image.channels[1].data()[i] + 0.0722f * image.channels[2].data()[i];
+        lattices.push_back(std::move(y));
+    }
+    for (Plane& p : lattices)
+        for (size_t i = 0; i < p.size(); ++i)
+            p.data()[i] = std::clamp(p.data()[i], 0.0f, 1.0f);
+    return lattices;
+}
+
+// The ramp's colour at value v in [0, 1]: linear between evenly spaced stops.
+void ramp_colour(const std::vector<float>& ramp, float v, float* rgb)
+{
+    const size_t stops = ramp.size() / 3;
+    const float pos = std::clamp(v, 0.0f, 1.0f) * float(stops - 1);
+    const size_t k = std::min(size_t(pos), stops - 2);
+    const float t = pos - float(k);
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = ramp[3 * k + size_t(c)]
+            + t * (ramp[3 * (k + 1) + size_t(c)] - ramp[3 * k + size_t(c)]);
+}
+
+bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::ImageBuf* initial,
+    const OIIO::ImageBuf* dilation)
+{
+    std::string error;
+    if (!opt.validate(error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+    const std::vector<Size> sizes = level_sizes(opt);
+    PlanarImage input;
+    if (initial && !planes_at(*initial, sizes[0], input, error)) {
+        dst.errorfmt("initial image: {}", error);
+        return false;
+    }
+    const size_t nlattices
+        = initial && opt.transfer == CascadeTransfer::Channels ? input.channels.size() : 1;
+    if (!opt.ramp.empty() && nlattices != 1) {
+        dst.errorfmt("ramp= colours one lattice; with transfer=channels there are {}", nlattices);
+        return false;
+    }
+    if (dilation && dilation->spec().nchannels != 1) {
+        dst.errorfmt(
+            "the dilation control image has {} channels; expected 1", dilation->spec().nchannels);
+        return false;
+    }
+    const double per_pixel = 4.0 * (3.0 * double(nlattices) + 2.0 + (opt.ramp.empty() ? 0 : 3));
+    if (!detail::check_memory(size_t(per_pixel * double(opt.width) * double(opt.height)),
+            "size=" + std::to_string(opt.width) + "x" + std::to_string(opt.height), error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+
+    const detail::CascadeKernelWeights kernel = detail::cascade_kernel(opt);
+    std::vector<Plane> lattices = initial
+        ? initial_lattices(input, opt.transfer)
+        : std::vector<Plane> { detail::seeded_noise(sizes[0].w, sizes[0].h, opt.seed, 0) };
+    Plane scratch;
+    for (int l = 0; l < opt.levels; ++l) {
+        const Size s = sizes[size_t(l)];
+        if (l > 0) {
+            const float n = at_level(opt.noise, l);
+            for (size_t c = 0; c < lattices.size(); ++c) {
+                lattices[c] = expand_plane(lattices[c], s.w, s.h, Boundary::Circular, opt.nthreads);
+                if (n > 0.0f) {
+                    const Plane fresh
+                        = detail::seeded_noise(s.w, s.h, opt.seed, uint64_t(l) * 1024 + c + 1);
+                    for (size_t i = 0; i < fresh.size(); ++i)
+                        lattices[c].data()[i]
+                            = (1.0f - n) * lattices[c].data()[i] + n * fresh.data()[i];
+                }
+            }
+        }
+        Plane spread;
+        if (dilation) {
+            PlanarImage control;
+            if (!planes_at(*dilation, s, control, error)) {
+                dst.errorfmt("dilation: {}", error);
+                return false;
+            }
+            spread = std::move(control.channels[0]);
+            for (size_t i = 0; i < spread.size(); ++i)
+                spread.data()[i]
+                    = opt.dmin + std::clamp(spread.data()[i], 0.0f, 1.0f) * (opt.dmax - opt.dmin);
+        }
+        const float r = at_level(opt.r, l);
+        for (Plane& a : lattices)
+            for (int it = 0; it < at_level(opt.iterations, l); ++it) {
+                if (dilation)
+                    detail::convolve_dilated(a, kernel, spread, scratch, opt.nthreads);
+                else
+                    detail::convolve_circular(a, kernel, scratch, opt.nthreads);
+                detail::apply_cascade_map(scratch, opt.map, r, opt.curve, opt.nthreads);
+                std::swap(a, scratch);
+            }
+    }
+
+    PlanarImage result;
+    if (!opt.ramp.empty()) {
+        result.channels.assign(3, Plane(opt.width, opt.height));
+        result.channel_names = { "R", "G", "B" };
+        const Plane& v = lattices[0];
+        for (size_t i = 0; i < v.size(); ++i) {
+            float rgb[3];
+            ramp_colour(opt.ramp, v.data()[i], rgb);
+            for (int c = 0; c < 3; ++c)
+                result.channels[size_t(c)].data()[i] = rgb[c];
+        }
+    } else {
+        result.channels = std::move(lattices);
+        result.channel_names
+            = nlattices == 1 ? std::vector<std::string> { "Y" } : input.channel_names;
+        result.alpha_channel = nlattices == 1 ? -1 : input.alpha_channel;
+    }
+    imagebuf_from_planes(result, dst, false);
+    dst.specmod().erase_attribute("oiio:UnassociatedAlpha");
+    detail::tag_synthesis(dst.specmod(), "cascade", opt.seed, CascadeOptions::table().format(opt));
+    return true;
+}
+
+} // namespace
+
+bool cascade_synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt,
+    const OIIO::ImageBuf* initial, const OIIO::ImageBuf* dilation)
+{
+    return detail::guarded(
+        dst, "cascade_synthesize", [&] { return synthesize(dst, opt, initial, dilation); });
+}
+
+OIIO::ImageBuf cascade_synthesize(
+    const CascadeOptions& opt, const OIIO::ImageBuf* initial, const OIIO::ImageBuf* dilation)
+{
+    return detail::value_form("cascade_synthesize",
+        [&](OIIO::ImageBuf& dst) { return cascade_synthesize(dst, opt, initial, dilation); });
+}
+
+} // namespace texsyn

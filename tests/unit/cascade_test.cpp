@@ -1,0 +1,282 @@
+// SPDX-License-Identifier: Apache-2.0
+// The cascade of iterated maps and convolutions: maps, kernels against a direct
+// implementation, dilation, wrap, determinism, transfer, ramps and bad options.
+#include <texsyn/cascade.h>
+#include <texsyn/random.h>
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "cascade/cascade_pvt.h"
+#include "test_metrics.h"
+#include "test_samples.h"
+
+using namespace texsyn;
+
+namespace {
+
+using test::linear_sample;
+using test::pixel_hash;
+using test::planes_of;
+using test::seam_ratio;
+
+Plane random_plane(int w, int h, uint64_t seed)
+{
+    Plane p(w, h);
+    for (size_t i = 0; i < p.size(); ++i)
+        p.data()[i] = random_uniform(seed, 0, i);
+    return p;
+}
+
+// The textbook circular convolution, one output pixel at a time.
+Plane direct_convolution(const Plane& in, const detail::CascadeKernelWeights& k)
+{
+    const int w = in.width(), h = in.height(), half = k.size / 2;
+    Plane out(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            double sum = 0;
+            for (int j = 0; j < k.size; ++j)
+                for (int i = 0; i < k.size; ++i)
+                    sum += double(k.at(i, j))
+                        * in(((x + i - half) % w + w) % w, ((y + j - half) % h + h) % h);
+            out(x, y) = float(sum);
+        }
+    return out;
+}
+
+CascadeOptions options(int w, int h)
+{
+    CascadeOptions opt;
+    opt.width = w;
+    opt.height = h;
+    opt.seed = 4;
+    return opt;
+}
+
+// Pearson correlation of two planes of equal size.
+double correlation(const Plane& a, const Plane& b)
+{
+    double ma = 0, mb = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        ma += a.data()[i];
+        mb += b.data()[i];
+    }
+    ma /= double(a.size());
+    mb /= double(b.size());
+    double ab = 0, aa = 0, bb = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        const double da = a.data()[i] - ma, db = b.data()[i] - mb;
+        ab += da * db;
+        aa += da * da;
+        bb += db * db;
+    }
+    return ab / std::sqrt(aa * bb);
+}
+
+} // namespace
+
+TEST(CascadeMaps, ValuesAndPeaks)
+{
+    using detail::cascade_map_value;
+    const std::vector<float> none;
+    EXPECT_FLOAT_EQ(cascade_map_value(CascadeMap::Logistic, 3.9f, none, 0.5f), 0.975f);
+    EXPECT_FLOAT_EQ(cascade_map_value(CascadeMap::Logistic, 3.9f, none, 0.2f), 3.9f * 0.2f * 0.8f);
+    EXPECT_NEAR(cascade_map_value(CascadeMap::Sine, 4.0f, none, 0.5f), 1.0f, 1e-6);
+    EXPECT_NEAR(cascade_map_value(CascadeMap::Sine, 2.0f, none, 0.25f),
+        0.5f * std::sin(3.14159265f * 0.25f), 1e-6);
+    EXPECT_FLOAT_EQ(cascade_map_value(CascadeMap::Tent, 3.0f, none, 0.5f), 0.75f);
+    EXPECT_FLOAT_EQ(cascade_map_value(CascadeMap::Tent, 3.0f, none, 0.25f), 0.375f);
+    EXPECT_NEAR(
+        cascade_map_value(CascadeMap::Cubic, 3.0f, none, 1.0f / std::sqrt(3.0f)), 0.75f, 1e-6);
+    const std::vector<float> curve = { 0.0f, 0.0f, 0.3f, 0.9f, 1.0f, 0.2f };
+    EXPECT_NEAR(cascade_map_value(CascadeMap::Curve, 0, curve, 0.15f), 0.45f, 1e-6);
+    EXPECT_NEAR(cascade_map_value(CascadeMap::Curve, 0, curve, 0.65f), 0.55f, 1e-6);
+    // Inputs outside [0, 1] are clamped first; outputs stay in [0, 1].
+    EXPECT_FLOAT_EQ(cascade_map_value(CascadeMap::Logistic, 3.9f, none, -0.5f), 0.0f);
+    EXPECT_FLOAT_EQ(cascade_map_value(CascadeMap::Tent, 4.0f, none, 2.0f), 0.0f);
+}
+
+// Every kernel sums to 1, and the row-shifting convolution equals the textbook one.
+TEST(CascadeKernels, ConvolutionMatchesTheDirectSum)
+{
+    const Plane in = random_plane(37, 23, 1);
+    for (CascadeKernel k :
+        { CascadeKernel::Box3, CascadeKernel::Box5, CascadeKernel::Box7, CascadeKernel::Gauss3,
+            CascadeKernel::Gauss5, CascadeKernel::Gauss7, CascadeKernel::Dog5, CascadeKernel::Dog7,
+            CascadeKernel::Aniso5, CascadeKernel::Aniso7, CascadeKernel::Custom }) {
+        CascadeOptions opt;
+        opt.kernel = k;
+        opt.angle = 30.0f;
+        opt.ksize = 3;
+        opt.weights = { 1, 2, 1, 0, 4, 0, -1, 2, 3 };
+        const detail::CascadeKernelWeights weights = detail::cascade_kernel(opt);
+        double sum = 0;
+        for (float w : weights.weights)
+            sum += w;
+        EXPECT_NEAR(sum, 1.0, 1e-6) << int(k);
+        Plane fast;
+        detail::convolve_circular(in, weights, fast, 2);
+        const Plane direct = direct_convolution(in, weights);
+        for (size_t i = 0; i < in.size(); ++i)
+            ASSERT_NEAR(fast.data()[i], direct.data()[i], 2e-6) << int(k) << " at " << i;
+    }
+}
+
+// An anisotropic kernel is longer along its angle: at 0 degrees it spreads along x.
+TEST(CascadeKernels, AnisotropicKernelFollowsItsAngle)
+{
+    CascadeOptions opt;
+    opt.kernel = CascadeKernel::Aniso7;
+    const detail::CascadeKernelWeights k0 = detail::cascade_kernel(opt);
+    EXPECT_GT(k0.at(6, 3), 10 * k0.at(3, 6));
+    opt.angle = 90.0f;
+    const detail::CascadeKernelWeights k90 = detail::cascade_kernel(opt);
+    EXPECT_GT(k90.at(3, 6), 10 * k90.at(6, 3));
+}
+
+// Dilation 1 everywhere is exactly the undilated operator, in the convolution and in a
+// whole cascade; dilation 2 spreads the taps.
+TEST(CascadeDilation, OneEqualsTheUndilatedOperator)
+{
+    const Plane in = random_plane(40, 30, 2);
+    CascadeOptions opt;
+    opt.kernel = CascadeKernel::Gauss5;
+    const detail::CascadeKernelWeights k = detail::cascade_kernel(opt);
+    Plane plain, dilated;
+    detail::convolve_circular(in, k, plain, 1);
+    detail::convolve_dilated(in, k, Plane(40, 30, 1.0f), dilated, 2);
+    for (size_t i = 0; i < in.size(); ++i)
+        ASSERT_EQ(plain.data()[i], dilated.data()[i]) << i;
+    detail::convolve_dilated(in, k, Plane(40, 30, 2.0f), dilated, 2);
+    // Dilation 2: the taps fall on even offsets.
+    double sum = 0;
+    for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 5; ++i)
+            sum += double(k.at(i, j)) * in((10 + 2 * (i - 2) + 40) % 40, (10 + 2 * (j - 2)) % 30);
+    EXPECT_NEAR(dilated(10, 10), sum, 1e-5);
+
+    OIIO::ImageBuf control;
+    PlanarImage zero;
+    zero.channels = { Plane(32, 32, 0.0f) };
+    zero.channel_names = { "Y" };
+    imagebuf_from_planes(zero, control, false);
+    CascadeOptions c = options(64, 64);
+    c.levels = 2;
+    const OIIO::ImageBuf undilated = cascade_synthesize(c);
+    const OIIO::ImageBuf one = cascade_synthesize(c, nullptr, &control);
+    ASSERT_FALSE(one.has_error()) << one.geterror();
+    EXPECT_EQ(pixel_hash(one), pixel_hash(undilated));
+}
+
+// Circular convolution makes the output a torus; the result ignores the thread count and
+// depends on the seed; odd sizes work with several levels.
+TEST(Cascade, TilesIsDeterministicAndTakesAnySize)
+{
+    CascadeOptions opt = options(300, 200);
+    opt.levels = 3;
+    opt.r = { 3.9f, 3.7f, 3.5f };
+    opt.noise = { 0.0f, 0.2f };
+    std::string first;
+    for (int threads : { 1, 2, 4 }) {
+        opt.nthreads = threads;
+        const OIIO::ImageBuf out = cascade_synthesize(opt);
+        ASSERT_FALSE(out.has_error()) << out.geterror();
+        EXPECT_EQ(out.spec().width, 300);
+        EXPECT_EQ(out.spec().height, 200);
+        EXPECT_EQ(out.spec().get_string_attribute("synth:method"), "cascade");
+        if (first.empty())
+            first = pixel_hash(out);
+        EXPECT_EQ(pixel_hash(out), first) << threads;
+        EXPECT_LT(seam_ratio(out), 1.3);
+    }
+    opt.seed = 5;
+    EXPECT_NE(pixel_hash(cascade_synthesize(opt)), first);
+}
+
+// Values stay in [0, 1] and the pattern is neither flat nor white noise: neighbours are
+// correlated (the convolution's smoothness) but the values spread (the map's roughness).
+TEST(Cascade, TransientPatternBetweenSmoothAndRough)
+{
+    const OIIO::ImageBuf out = cascade_synthesize(options(128, 128));
+    const Plane p = planes_of(out).channels[0];
+    double lo = 1, hi = 0;
+    for (size_t i = 0; i < p.size(); ++i) {
+        lo = std::min(lo, double(p.data()[i]));
+        hi = std::max(hi, double(p.data()[i]));
+    }
+    EXPECT_GE(lo, 0.0);
+    EXPECT_LE(hi, 1.0);
+    EXPECT_GT(hi - lo, 0.3);
+    Plane shifted(128, 128);
+    for (int y = 0; y < 128; ++y)
+        for (int x = 0; x < 128; ++x)
+            shifted(x, y) = p((x + 1) % 128, y);
+    const double c = correlation(p, shifted);
+    EXPECT_GT(c, 0.2);
+    EXPECT_LT(c, 0.99);
+}
+
+// Structured initial conditions (texture transfer): the sample's large features survive.
+TEST(Cascade, TransferKeepsTheImagesFeatures)
+{
+    const OIIO::ImageBuf sample = linear_sample("marble_pink.png");
+    CascadeOptions opt = options(128, 128);
+    opt.iterations = { 2 };
+    opt.r = { 3.0f };
+    const Plane out = planes_of(cascade_synthesize(opt, &sample)).channels[0];
+    const PlanarImage s = planes_of(sample);
+    Plane lum(128, 128);
+    for (size_t i = 0; i < lum.size(); ++i)
+        lum.data()[i] = 0.2126f * s.channels[0].data()[i] + 0.7152f * s.channels[1].data()[i]
+            + 0.0722f * s.channels[2].data()[i];
+    const Plane noise_start = planes_of(cascade_synthesize(opt)).channels[0];
+    EXPECT_GT(std::abs(correlation(out, lum)), 0.3);
+    EXPECT_LT(std::abs(correlation(noise_start, lum)), 0.1);
+    opt.transfer = CascadeTransfer::Channels;
+    const OIIO::ImageBuf channels = cascade_synthesize(opt, &sample);
+    EXPECT_EQ(channels.nchannels(), 3);
+}
+
+// A ramp colours the lattice: every pixel lies on the ramp's segment.
+TEST(Cascade, RampColoursTheLattice)
+{
+    CascadeOptions opt = options(64, 64);
+    opt.ramp = { 0, 0, 0, 1.0f, 0.5f, 0.25f };
+    const PlanarImage out = planes_of(cascade_synthesize(opt));
+    ASSERT_EQ(out.channels.size(), 3u);
+    for (size_t i = 0; i < out.channels[0].size(); ++i) {
+        const float r = out.channels[0].data()[i];
+        EXPECT_NEAR(out.channels[1].data()[i], 0.5f * r, 1e-6);
+        EXPECT_NEAR(out.channels[2].data()[i], 0.25f * r, 1e-6);
+    }
+}
+
+TEST(Cascade, RefusesBadOptions)
+{
+    auto error_of = [](const CascadeOptions& opt) {
+        OIIO::ImageBuf out;
+        EXPECT_FALSE(cascade_synthesize(out, opt));
+        return out.geterror();
+    };
+    CascadeOptions opt = options(64, 64);
+    opt.map = CascadeMap::Curve;
+    opt.curve = { 0, 0 };
+    EXPECT_NE(error_of(opt).find("at least 2 points"), std::string::npos);
+    opt.curve = { 0.5f, 0, 0.2f, 1 };
+    EXPECT_NE(error_of(opt).find("x must increase"), std::string::npos);
+    opt = options(64, 64);
+    opt.kernel = CascadeKernel::Custom;
+    opt.ksize = 3;
+    opt.weights = { 1, 2, 3 };
+    EXPECT_NE(error_of(opt).find("needs 9 weights"), std::string::npos);
+    opt = options(64, 64);
+    opt.ramp = { 1, 0 };
+    EXPECT_NE(error_of(opt).find("r,g,b triples"), std::string::npos);
+    opt = options(64, 64);
+    opt.r = { 3.9f, 3.8f };
+    EXPECT_NE(error_of(opt).find("values for levels=1"), std::string::npos);
+    EXPECT_NE(error_of(options(0, 0)).find("size=0x0"), std::string::npos);
+    EXPECT_NE(error_of(options(65536, 65536)).find("memory"), std::string::npos);
+}
