@@ -2,6 +2,7 @@
 // The cascade's circular convolutions (cascade_pvt.h).
 #include "cascade_pvt.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <OpenImageIO/parallel.h>
@@ -48,8 +49,11 @@ void convolve_circular(const Plane& in, const CascadeKernelWeights& k, Plane& ou
                 std::fill(acc, acc + w, 0.0f);
                 for (int j = 0; j < k.size; ++j) {
                     const float* src = in.row(wrap_index(int(y) + j - half, h));
-                    for (int x = 0; x < w + 2 * half; ++x)
+                    std::copy_n(src, w, padded.data() + half);
+                    for (int x = 0; x < half; ++x) {
                         padded[size_t(x)] = src[wrap_index(x - half, w)];
+                        padded[size_t(w + half + x)] = src[wrap_index(w + x, w)];
+                    }
                     for (int i = 0; i < k.size; ++i) {
                         const float wt = k.at(i, j);
                         const float* p = padded.data() + i;
