@@ -147,10 +147,10 @@ TEST(CascadeDilation, OneEqualsTheUndilatedOperator)
     const detail::CascadeKernelWeights k = detail::cascade_kernel(opt);
     Plane plain, dilated;
     detail::convolve_circular(in, k, plain, 1);
-    detail::convolve_dilated(in, k, Plane(40, 30, 1.0f), dilated, 2);
+    detail::convolve_warped(in, k, Plane(40, 30, 1.0f), Plane(40, 30, 0.0f), dilated, 2);
     for (size_t i = 0; i < in.size(); ++i)
         ASSERT_EQ(plain.data()[i], dilated.data()[i]) << i;
-    detail::convolve_dilated(in, k, Plane(40, 30, 2.0f), dilated, 2);
+    detail::convolve_warped(in, k, Plane(40, 30, 2.0f), Plane(), dilated, 2);
     // Dilation 2: the taps fall on even offsets.
     double sum = 0;
     for (int j = 0; j < 5; ++j)
@@ -305,4 +305,56 @@ TEST(Cascade, PresetsAreDistinctLooks)
     EXPECT_EQ(opt.r, std::vector<float> { 3.5f });
     EXPECT_FALSE(table.set(opt, "preset", "plaid", error));
     EXPECT_NE(error.find("cells|blotches"), std::string::npos);
+}
+
+// A rotation control of 0 is the plain operator; a quarter turn turns an anisotropic
+// pattern from along x to along y.
+TEST(CascadeRotation, QuarterTurnTurnsThePattern)
+{
+    auto control = [](float value) {
+        PlanarImage p;
+        p.channels = { Plane(16, 16, value) };
+        p.channel_names = { "Y" };
+        OIIO::ImageBuf buf;
+        imagebuf_from_planes(p, buf, false);
+        return buf;
+    };
+    CascadeOptions opt = options(96, 96);
+    opt.kernel = CascadeKernel::Aniso7;
+    const OIIO::ImageBuf zero = control(0.0f), quarter = control(0.25f);
+    const OIIO::ImageBuf plain = cascade_synthesize(opt);
+    EXPECT_EQ(pixel_hash(cascade_synthesize(opt, nullptr, nullptr, &zero)), pixel_hash(plain));
+    auto along_x = [](const OIIO::ImageBuf& buf) {
+        const Plane p = planes_of(buf).channels[0];
+        double gx = 0, gy = 0;
+        for (int y = 0; y + 1 < p.height(); ++y)
+            for (int x = 0; x + 1 < p.width(); ++x) {
+                gx += std::pow(p(x + 1, y) - p(x, y), 2.0);
+                gy += std::pow(p(x, y + 1) - p(x, y), 2.0);
+            }
+        return gy / gx; // > 1: features stretched along x
+    };
+    EXPECT_GT(along_x(plain), 1.5);
+    EXPECT_LT(along_x(cascade_synthesize(opt, nullptr, nullptr, &quarter)), 1.0 / 1.5);
+}
+
+// A palette image colours the lattice with its own colours by luminance rank.
+TEST(Cascade, PaletteGivesTheImagesColours)
+{
+    PlanarImage flat;
+    flat.channels = { Plane(8, 8, 0.4f), Plane(8, 8, 0.2f), Plane(8, 8, 0.1f) };
+    flat.channel_names = { "R", "G", "B" };
+    OIIO::ImageBuf palette;
+    imagebuf_from_planes(flat, palette, false);
+    CascadeOptions opt = options(32, 32);
+    const PlanarImage out = planes_of(cascade_synthesize(opt, nullptr, nullptr, nullptr, &palette));
+    ASSERT_EQ(out.channels.size(), 3u);
+    for (size_t i = 0; i < out.channels[0].size(); ++i) {
+        ASSERT_EQ(out.channels[0].data()[i], 0.4f);
+        ASSERT_EQ(out.channels[2].data()[i], 0.1f);
+    }
+    opt.ramp = { 0, 0, 0, 1, 1, 1 };
+    OIIO::ImageBuf dst;
+    EXPECT_FALSE(cascade_synthesize(dst, opt, nullptr, nullptr, nullptr, &palette));
+    EXPECT_NE(dst.geterror().find("palette"), std::string::npos);
 }

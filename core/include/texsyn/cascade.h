@@ -86,14 +86,20 @@ struct CascadeOptions {
 /// mixed with fresh noise by its `noise` weight. With `dilation` (a one-channel control
 /// image, resized to each level, values clamped to [0, 1]) the kernel's taps are spread by
 /// dmin + c (dmax - dmin) pixels at each pixel, sampled bilinearly; dilation 1 everywhere
-/// is exactly the undilated operator. The result is the last level, mapped through `ramp`
-/// if given.
-/// Fails (false, message in dst) on invalid options, an `initial` or `dilation` image with
-/// an error, NaN/Inf or (dilation) more than one channel, or an output that would need
-/// more memory than the machine has.
+/// is exactly the undilated operator. With `rotation` (a one-channel control image, values
+/// clamped to [0, 1]) the taps are also turned by c turns (c x 360 degrees) at each pixel.
+/// The result is the last level, mapped through `ramp` if given, or through `palette` (an
+/// image, e.g. a texture sample in scene-linear): value v takes the colour of the palette
+/// pixel of rank v among its pixels sorted by luminance, so a procedural pattern wears the
+/// sample's colours.
+/// Fails (false, message in dst) on invalid options, an input image with an error or
+/// NaN/Inf, a control image with more than one channel, both `ramp` and `palette`, or an
+/// output that would need more memory than the machine has.
 bool cascade_synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt,
-    const OIIO::ImageBuf* initial = nullptr, const OIIO::ImageBuf* dilation = nullptr);
+    const OIIO::ImageBuf* initial = nullptr, const OIIO::ImageBuf* dilation = nullptr,
+    const OIIO::ImageBuf* rotation = nullptr, const OIIO::ImageBuf* palette = nullptr);
 OIIO::ImageBuf cascade_synthesize(const CascadeOptions& opt,
-    const OIIO::ImageBuf* initial = nullptr, const OIIO::ImageBuf* dilation = nullptr);
+    const OIIO::ImageBuf* initial = nullptr, const OIIO::ImageBuf* dilation = nullptr,
+    const OIIO::ImageBuf* rotation = nullptr, const OIIO::ImageBuf* palette = nullptr);
 
 } // namespace texsyn

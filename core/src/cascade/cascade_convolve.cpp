@@ -66,8 +66,8 @@ void convolve_circular(const Plane& in, const CascadeKernelWeights& k, Plane& ou
         OIIO::paropt(nthreads));
 }
 
-void convolve_dilated(
-    const Plane& in, const CascadeKernelWeights& k, const Plane& dilation, Plane& out, int nthreads)
+void convolve_warped(const Plane& in, const CascadeKernelWeights& k, const Plane& dilation,
+    const Plane& angle, Plane& out, int nthreads)
 {
     const int w = in.width(), h = in.height(), half = k.size / 2;
     if (out.width() != w || out.height() != h)
@@ -78,13 +78,17 @@ void convolve_dilated(
             for (int64_t y = begin; y < end; ++y) {
                 float* acc = out.row(int(y));
                 for (int x = 0; x < w; ++x) {
-                    const float d = dilation(x, int(y));
+                    const float d = dilation.empty() ? 1.0f : dilation(x, int(y));
+                    const float a = angle.empty() ? 0.0f : angle(x, int(y));
+                    const float c = d * std::cos(a), s = d * std::sin(a);
                     float sum = 0.0f;
                     for (int j = 0; j < k.size; ++j)
-                        for (int i = 0; i < k.size; ++i)
+                        for (int i = 0; i < k.size; ++i) {
+                            const float u = float(i - half), v = float(j - half);
                             sum += k.at(i, j)
-                                * sample_circular(in, float(x) + d * float(i - half),
-                                    float(y) + d * float(j - half));
+                                * sample_circular(
+                                    in, float(x) + c * u - s * v, float(y) + s * u + c * v);
+                        }
                     acc[x] = sum;
                 }
             }

@@ -30,10 +30,11 @@ CascadeKernelWeights cascade_kernel(const CascadeOptions& opt);
 /// Each row is a sum of shifted rows, so it vectorises; parallel over rows.
 void convolve_circular(const Plane& in, const CascadeKernelWeights& k, Plane& out, int nthreads);
 
-/// The dilated convolution: tap (i, j) of pixel (x, y) is read at (x, y) + d(x, y) (i - h,
-/// j - h), bilinearly and circularly, with d = dilation(x, y) (>= 0). d = 1 everywhere gives
-/// exactly convolve_circular's result.
-void convolve_dilated(const Plane& in, const CascadeKernelWeights& k, const Plane& dilation,
-    Plane& out, int nthreads);
+/// The warped convolution: tap (i, j) of pixel (x, y) is read at (x, y) + d R(a) (i - h,
+/// j - h), bilinearly and circularly, with d = dilation(x, y) (1 if `dilation` is empty)
+/// and R(a) the rotation by a = angle(x, y) radians (0 if `angle` is empty). d = 1 and
+/// a = 0 everywhere give exactly convolve_circular's result.
+void convolve_warped(const Plane& in, const CascadeKernelWeights& k, const Plane& dilation,
+    const Plane& angle, Plane& out, int nthreads);
 
 } // namespace texsyn::detail

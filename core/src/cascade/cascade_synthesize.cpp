@@ -78,8 +78,46 @@ void ramp_colour(const std::vector<float>& ramp, float v, float* rgb)
             + t * (ramp[3 * (k + 1) + size_t(c)] - ramp[3 * k + size_t(c)]);
 }
 
+// The palette's pixels sorted by luminance (ties: pixel order), as RGB triples.
+bool palette_by_luminance(const OIIO::ImageBuf& image, std::vector<float>& rgb, std::string& error)
+{
+    PlanarImage p;
+    if (!planes_from_imagebuf(image, p, error))
+        return false;
+    const size_t n = p.channels[0].size();
+    auto channel = [&](size_t c, size_t i) {
+        return p.channels[std::min(c, p.channels.size() - 1)].data()[i];
+    };
+    std::vector<std::pair<float, size_t>> order(n);
+    for (size_t i = 0; i < n; ++i)
+        order[i]
+            = { 0.2126f * channel(0, i) + 0.7152f * channel(1, i) + 0.0722f * channel(2, i), i };
+    std::sort(order.begin(), order.end());
+    rgb.resize(3 * n);
+    for (size_t k = 0; k < n; ++k)
+        for (size_t c = 0; c < 3; ++c)
+            rgb[3 * k + c] = channel(c, order[k].second);
+    return true;
+}
+
+// A one-channel control image at level size s, clamped to [0, 1] and mapped to
+// lo + c (hi - lo).
+bool control_at(const OIIO::ImageBuf& image, const char* what, Size s, float lo, float hi,
+    Plane& out, std::string& error)
+{
+    PlanarImage control;
+    if (!planes_at(image, s, control, error)) {
+        error = std::string(what) + ": " + error;
+        return false;
+    }
+    out = std::move(control.channels[0]);
+    for (size_t i = 0; i < out.size(); ++i)
+        out.data()[i] = lo + std::clamp(out.data()[i], 0.0f, 1.0f) * (hi - lo);
+    return true;
+}
+
 bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::ImageBuf* initial,
-    const OIIO::ImageBuf* dilation)
+    const OIIO::ImageBuf* dilation, const OIIO::ImageBuf* rotation, const OIIO::ImageBuf* palette)
 {
     std::string error;
     if (!opt.validate(error)) {
@@ -98,12 +136,24 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::Imag
         dst.errorfmt("ramp= colours one lattice; with transfer=channels there are {}", nlattices);
         return false;
     }
-    if (dilation && dilation->spec().nchannels != 1) {
-        dst.errorfmt(
-            "the dilation control image has {} channels; expected 1", dilation->spec().nchannels);
-        return false;
+    for (auto [image, what] : { std::pair { dilation, "dilation" }, { rotation, "rotation" } })
+        if (image && image->spec().nchannels != 1) {
+            dst.errorfmt(
+                "the {} control image has {} channels; expected 1", what, image->spec().nchannels);
+            return false;
+        }
+    std::vector<float> colours = opt.ramp;
+    if (palette) {
+        if (!opt.ramp.empty() || nlattices != 1) {
+            dst.errorfmt("a palette image colours one lattice and replaces ramp=");
+            return false;
+        }
+        if (!palette_by_luminance(*palette, colours, error)) {
+            dst.errorfmt("palette: {}", error);
+            return false;
+        }
     }
-    const double per_pixel = 4.0 * (3.0 * double(nlattices) + 2.0 + (opt.ramp.empty() ? 0 : 3));
+    const double per_pixel = 4.0 * (3.0 * double(nlattices) + 3.0 + (colours.empty() ? 0 : 3));
     if (!detail::check_memory(size_t(per_pixel * double(opt.width) * double(opt.height)),
             "size=" + std::to_string(opt.width) + "x" + std::to_string(opt.height), error)) {
         dst.errorfmt("{}", error);
@@ -130,23 +180,18 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::Imag
                 }
             }
         }
-        Plane spread;
-        if (dilation) {
-            PlanarImage control;
-            if (!planes_at(*dilation, s, control, error)) {
-                dst.errorfmt("dilation: {}", error);
-                return false;
-            }
-            spread = std::move(control.channels[0]);
-            for (size_t i = 0; i < spread.size(); ++i)
-                spread.data()[i]
-                    = opt.dmin + std::clamp(spread.data()[i], 0.0f, 1.0f) * (opt.dmax - opt.dmin);
+        Plane spread, angle;
+        if ((dilation && !control_at(*dilation, "dilation", s, opt.dmin, opt.dmax, spread, error))
+            || (rotation
+                && !control_at(*rotation, "rotation", s, 0.0f, 6.28318531f, angle, error))) {
+            dst.errorfmt("{}", error);
+            return false;
         }
         const float r = at_level(opt.r, l);
         for (Plane& a : lattices)
             for (int it = 0; it < at_level(opt.iterations, l); ++it) {
-                if (dilation)
-                    detail::convolve_dilated(a, kernel, spread, scratch, opt.nthreads);
+                if (dilation || rotation)
+                    detail::convolve_warped(a, kernel, spread, angle, scratch, opt.nthreads);
                 else
                     detail::convolve_circular(a, kernel, scratch, opt.nthreads);
                 detail::apply_cascade_map(scratch, opt.map, r, opt.curve, opt.nthreads);
@@ -155,13 +200,13 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::Imag
     }
 
     PlanarImage result;
-    if (!opt.ramp.empty()) {
+    if (!colours.empty()) {
         result.channels.assign(3, Plane(opt.width, opt.height));
         result.channel_names = { "R", "G", "B" };
         const Plane& v = lattices[0];
         for (size_t i = 0; i < v.size(); ++i) {
             float rgb[3];
-            ramp_colour(opt.ramp, v.data()[i], rgb);
+            ramp_colour(colours, v.data()[i], rgb);
             for (int c = 0; c < 3; ++c)
                 result.channels[size_t(c)].data()[i] = rgb[c];
         }
@@ -180,17 +225,19 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::Imag
 } // namespace
 
 bool cascade_synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt,
-    const OIIO::ImageBuf* initial, const OIIO::ImageBuf* dilation)
+    const OIIO::ImageBuf* initial, const OIIO::ImageBuf* dilation, const OIIO::ImageBuf* rotation,
+    const OIIO::ImageBuf* palette)
 {
-    return detail::guarded(
-        dst, "cascade_synthesize", [&] { return synthesize(dst, opt, initial, dilation); });
+    return detail::guarded(dst, "cascade_synthesize",
+        [&] { return synthesize(dst, opt, initial, dilation, rotation, palette); });
 }
 
-OIIO::ImageBuf cascade_synthesize(
-    const CascadeOptions& opt, const OIIO::ImageBuf* initial, const OIIO::ImageBuf* dilation)
+OIIO::ImageBuf cascade_synthesize(const CascadeOptions& opt, const OIIO::ImageBuf* initial,
+    const OIIO::ImageBuf* dilation, const OIIO::ImageBuf* rotation, const OIIO::ImageBuf* palette)
 {
-    return detail::value_form("cascade_synthesize",
-        [&](OIIO::ImageBuf& dst) { return cascade_synthesize(dst, opt, initial, dilation); });
+    return detail::value_form("cascade_synthesize", [&](OIIO::ImageBuf& dst) {
+        return cascade_synthesize(dst, opt, initial, dilation, rotation, palette);
+    });
 }
 
 } // namespace texsyn
