@@ -5,6 +5,7 @@
 #include <texsyn/random.h>
 
 #include <cmath>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -279,4 +280,29 @@ TEST(Cascade, RefusesBadOptions)
     EXPECT_NE(error_of(opt).find("values for levels=1"), std::string::npos);
     EXPECT_NE(error_of(options(0, 0)).find("size=0x0"), std::string::npos);
     EXPECT_NE(error_of(options(65536, 65536)).find("memory"), std::string::npos);
+}
+
+// The named looks parse, differ from each other, and options after a preset override it.
+TEST(Cascade, PresetsAreDistinctLooks)
+{
+    const OptionTable<CascadeOptions>& table = CascadeOptions::table();
+    std::set<std::string> hashes;
+    for (const char* name : { "cells", "blotches", "fibres", "bands", "caustics", "stone" }) {
+        CascadeOptions opt = options(96, 96);
+        std::string error;
+        ASSERT_TRUE(table.set(opt, "preset", name, error)) << error;
+        const OIIO::ImageBuf out = cascade_synthesize(opt);
+        ASSERT_FALSE(out.has_error()) << name << ": " << out.geterror();
+        EXPECT_EQ(out.nchannels(), 3) << name;
+        hashes.insert(pixel_hash(out));
+    }
+    EXPECT_EQ(hashes.size(), 6u);
+    CascadeOptions opt = options(96, 96);
+    std::string error;
+    ASSERT_TRUE(table.set(opt, "preset", "cells", error));
+    ASSERT_TRUE(table.set(opt, "r", "3.5", error));
+    EXPECT_EQ(opt.kernel, CascadeKernel::Dog7);
+    EXPECT_EQ(opt.r, std::vector<float> { 3.5f });
+    EXPECT_FALSE(table.set(opt, "preset", "plaid", error));
+    EXPECT_NE(error.find("cells|blotches"), std::string::npos);
 }

@@ -50,6 +50,11 @@ bool check_int_range(std::string_view name, int value, int lo, int hi, std::stri
 bool check_level_list(
     std::string_view name, const std::vector<int>& values, int levels, std::string& error);
 
+/// Splits "name=value:name=value" into pairs. False (message names the malformed piece)
+/// if a piece has no '=' or an empty name.
+bool split_option_string(std::string_view text,
+    std::vector<std::pair<std::string, std::string>>& pairs, std::string& error);
+
 /// The kind of value an option takes: how a recipe's JSON may write it (docs/recipes.md).
 enum class OptionType {
     Integer,  ///< "3" or 3 (an optional integer also "none")
@@ -193,6 +198,30 @@ public:
             [=](const T& t) { return format_number_list({ t.*member }); } });
         return *this;
     }
+    /// A named set of other options' values: `presets` maps each name to a
+    /// "name=value:…" text applied through T::table() when the option is read (later
+    /// options override it). It is written "none": its effect is in the other options.
+    OptionTable& preset(const char* name, std::vector<std::pair<std::string, std::string>> presets,
+        const char* help)
+    {
+        std::string allowed;
+        for (const auto& p : presets)
+            allowed += (allowed.empty() ? "" : "|") + p.first;
+        std::string nm = name;
+        m_fields.push_back({ nm, help, allowed, OptionType::Choice,
+            [=](T& t, std::string_view v, std::string& err) {
+                if (v == "none")
+                    return true;
+                for (const auto& p : presets)
+                    if (p.first == v)
+                        return apply_option_text(t, p.second, err);
+                err = nm + "=" + std::string(v) + " is not one of " + allowed;
+                return false;
+            },
+            [](const T&) { return std::string("none"); } });
+        return *this;
+    }
+
     /// A non-empty list of up to `max_count` integers in [lo, hi], written "a,b,c".
     OptionTable& integers(const char* name, std::vector<int> T::*member, int lo, int hi,
         size_t max_count, const char* help)
@@ -259,6 +288,18 @@ public:
     const std::vector<OptionField<T>>& fields() const { return m_fields; }
 
     /// The option called `name`, or null.
+    /// Applies "name=value:…" (`text`) to `opts` through T::table(); false with a message.
+    static bool apply_option_text(T& opts, std::string_view text, std::string& error)
+    {
+        std::vector<std::pair<std::string, std::string>> pairs;
+        if (!split_option_string(text, pairs, error))
+            return false;
+        for (const auto& [n, v] : pairs)
+            if (!T::table().set(opts, n, v, error))
+                return false;
+        return true;
+    }
+
     const OptionField<T>* find(std::string_view name) const
     {
         for (auto& f : m_fields)
@@ -304,10 +345,5 @@ public:
 private:
     std::vector<OptionField<T>> m_fields;
 };
-
-/// Splits "name=value:name=value" into pairs. False (message names the malformed piece)
-/// if a piece has no '=' or an empty name.
-bool split_option_string(std::string_view text,
-    std::vector<std::pair<std::string, std::string>>& pairs, std::string& error);
 
 } // namespace texsyn

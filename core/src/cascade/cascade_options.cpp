@@ -19,6 +19,29 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
     using K = CascadeKernel;
     static const OptionTable<O> t = [] {
         OptionTable<O> t;
+        // Looks found by trying; each sets every option that matters to it, and options
+        // after it override (docs/cascade.md shows them).
+        t.preset("preset",
+            { { "cells",
+                  "levels=1:kernel=dog7:map=logistic:r=3.9:iterations=5:"
+                  "ramp=0.05,0.03,0.02,0.6,0.45,0.3" },
+                { "blotches",
+                    "levels=4:kernel=gauss5:map=sine:r=3.9,3.8,3.6,3.4:noise=0,0.1:"
+                    "iterations=4:ramp=0.1,0.12,0.1,0.9,0.88,0.85" },
+                { "fibres",
+                    "levels=3:kernel=aniso7:angle=25:map=logistic:r=3.7:iterations=5:"
+                    "ramp=0.15,0.07,0.03,0.55,0.33,0.16" },
+                { "bands",
+                    "levels=5:kernel=gauss7:map=tent:r=3.2:iterations=3:noise=0,0.15:"
+                    "ramp=0.05,0.1,0.03,0.3,0.4,0.15" },
+                { "caustics",
+                    "levels=2:kernel=dog5:map=sine:r=4:iterations=8:"
+                    "ramp=0.01,0.05,0.15,0.6,0.8,0.9" },
+                { "stone",
+                    "levels=3:kernel=box3:map=curve:curve=0,0,0.45,1,0.55,1,1,0:"
+                    "iterations=6:ramp=0.2,0.1,0.05,0.7,0.5,0.35" } },
+            "a named look (cells, blotches, fibres, bands, caustics, stone) setting the "
+            "options below; options after it override it");
         t.size("size", &O::width, &O::height, kMaxSide, "", "output size WxH");
         t.integer("levels", &O::levels, 1, kMaxLevels,
             "cascade levels, coarsest first; each doubles the size (1 = a single level)");
