@@ -24,7 +24,8 @@ TEST_F(Cli, CascadeGeneratesAnImageWithoutInput)
     EXPECT_EQ(exr.spec().height, 32);
     EXPECT_EQ(exr.nchannels(), 1);
     EXPECT_EQ(exr.spec().get_string_attribute("synth:method"), "cascade");
-    EXPECT_EQ(exr.spec().get_string_attribute("synth:options").find("size=48x32:levels=2:"), 0u);
+    EXPECT_NE(exr.spec().get_string_attribute("synth:options").find("size=48x32:levels=2:"),
+        std::string::npos);
     EXPECT_EQ(file_type("out.exr"), OIIO::TypeHalf);
     // Integer files get the space of untagged integer samples, as a float input's result does.
     EXPECT_EQ(file_type("out.png"), OIIO::TypeUInt8);
@@ -33,6 +34,10 @@ TEST_F(Cli, CascadeGeneratesAnImageWithoutInput)
     r = texsyn("--cascade:size=16x16:ramp=0,0,0,1,0.5,0.1 -o ramp.exr");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(read("ramp.exr").nchannels(), 3);
+    // So does a preset's ramp; options after the preset override it.
+    r = texsyn("--cascade:size=16x16:preset=cells:ramp=none -o preset.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read("preset.exr").nchannels(), 1);
 }
 
 TEST_F(Cli, CascadeIsTheSameAtAnyThreadCount)
