@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Prints docs/options-<method>.md from the method's option table.
-// usage: texsyn_docgen pyramid|solid|mix|neighborhood|choosy
+// usage: texsyn_docgen pyramid|solid|mix|neighborhood|choosy|cascade
 #include <cstdio>
 #include <string>
 
+#include <texsyn/cascade.h>
 #include <texsyn/choosy.h>
 #include <texsyn/neighborhood.h>
 #include <texsyn/synthesis.h>
@@ -56,8 +57,16 @@ int main(int argc, char* argv[])
             "Castellanos & Williams choosy sampling on the pixel grid. Each side of `size` must "
             "be a multiple of 2^(levels-1). The tool also takes `map=FILE.exr`, the source map "
             "to write (not an option of the method: it names a file).\n\n");
+    } else if (method == "cascade") {
+        print_table<texsyn::CascadeOptions>("cascade", "CascadeOptions::table()",
+            "Iterated nonlinear maps and convolution in a multiscale cascade. A generator: with "
+            "no current image it starts from seeded noise; with one it starts from that image "
+            "(texture transfer) and makes it the size of that image unless `size` is given. "
+            "The tool also takes `dilation=FILE`, a one-channel control image read without "
+            "colour conversion (not an option of the method: it names a file).\n\n");
     } else {
-        std::fprintf(stderr, "usage: texsyn_docgen pyramid|solid|mix|neighborhood|choosy\n");
+        std::fprintf(
+            stderr, "usage: texsyn_docgen pyramid|solid|mix|neighborhood|choosy|cascade\n");
         return 1;
     }
     return 0;

@@ -10,6 +10,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <texsyn/cascade.h>
 #include <texsyn/choosy.h>
 #include <texsyn/color.h>
 #include <texsyn/neighborhood.h>
@@ -213,6 +214,11 @@ struct MapCommand {
     std::string map;
 };
 
+/// Takes `name`=FILE (at most once, not empty) out of a command's modifiers into `file`;
+/// returns the other modifiers. Throws CliError naming the command.
+std::string take_file_modifier(const std::string& command, const std::string& modifiers,
+    const std::string& name, std::string& file);
+
 /// Takes map=FILE.exr (at most once) out of a command's modifiers into `map`; returns the
 /// other modifiers. Throws CliError naming the command.
 std::string take_map_modifier(
@@ -269,6 +275,23 @@ void run_neighborhood(CliState& state, const std::string& command, const std::st
 /// --choosy[:name=value…]: Castellanos & Williams choosy sampling; pops a sample, pushes
 /// the synthesis; with map=FILE also writes the source map.
 void run_choosy(CliState& state, const std::string& command, const std::string& modifiers);
+
+/// --cascade's options and the tool's own dilation=FILE (the control image to read: a file
+/// name, so not a method option); `sized` says whether size= was given.
+struct CascadeCommand {
+    CascadeOptions options;
+    std::string dilation;
+    bool sized = false;
+};
+
+/// Parses and validates --cascade's modifiers; throws CliError naming the command.
+CascadeCommand parse_cascade_command(const std::string& command, const std::string& modifiers);
+
+/// --cascade[:name=value…]: iterated nonlinear maps and convolution in a multiscale
+/// cascade. A generator: with no image on the stack it pushes a new one; else it pops the
+/// image, uses it as the initial lattice (texture transfer, at the image's size unless
+/// size= is given) and pushes the result. dilation=FILE reads the control image (Raw).
+void run_cascade(CliState& state, const std::string& command, const std::string& modifiers);
 
 /// --apply-map MAP IMAGE: reads IMAGE (an input like any other), rearranges its pixels by
 /// the source map MAP, and pushes the result, which keeps IMAGE's colour space on output.

@@ -110,6 +110,18 @@ void print_help()
         "                          Options:\n");
     print_table(ChoosyOptions::table(), ChoosyOptions());
     std::printf(
+        "    --cascade[:name=value...]\n"
+        "                          Iterated nonlinear maps and convolution in a multiscale\n"
+        "                          cascade (A <- p(N(A)), circular, so it tiles). A\n"
+        "                          generator: with no current image it makes one from\n"
+        "                          seeded noise; else it replaces the current image by a\n"
+        "                          texture transfer from it, at its size unless size= is\n"
+        "                          given. dilation=FILE reads a one-channel control image\n"
+        "                          (no colour conversion) that spreads the kernel's taps by\n"
+        "                          dmin..dmax. The result is scene-linear (one channel Y,\n"
+        "                          or RGB with ramp=). Options:\n");
+    print_table(CascadeOptions::table(), CascadeOptions());
+    std::printf(
         "    --apply-map MAP IMAGE Read IMAGE (aligned with the sample of a --neighborhood\n"
         "                          or --choosy run) and rearrange its pixels by that run's\n"
         "                          source map MAP: height, normal or roughness maps follow\n"
@@ -124,7 +136,8 @@ void print_help()
         "    texsyn photo.png rust.png --transfer -o rusty_photo.exr\n"
         "    texsyn grass.png --neighborhood:size=512x512:map=coords.exr -o grass_big.exr\n"
         "    texsyn stone.png --choosy:size=512x512:iterations=1,8 -o stone_big.exr\n"
-        "    texsyn --apply-map coords.exr grass_height.png -o grass_height_big.exr\n");
+        "    texsyn --apply-map coords.exr grass_height.png -o grass_height_big.exr\n"
+        "    texsyn --cascade:size=512x512:levels=4:r=3.9 -o cascade.exr\n");
 }
 
 void print_methods()
@@ -140,7 +153,9 @@ void print_methods()
                 "neighborhood  Wei & Levoy 2000: multi-resolution neighbourhood search "
                 "(exhaustive, tsvq, kdtree, coherent), toroidal, with source maps\n"
                 "choosy     Castellanos & Williams: choosy sampling (use-count penalty keeps "
-                "the sample's histogram), isotropic by default, toroidal, with source maps\n");
+                "the sample's histogram), isotropic by default, toroidal, with source maps\n"
+                "cascade    iterated nonlinear maps and convolution in a multiscale cascade: a "
+                "generator, or a texture transfer from an image; seamless\n");
 }
 
 void print_version()

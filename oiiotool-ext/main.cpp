@@ -43,18 +43,20 @@ std::pair<std::string, std::string> split_command(const std::string& a)
 bool is_command(const std::string& name)
 {
     return name == "--pyramid" || name == "--analyze" || name == "--check" || name == "--solid"
-        || name == "--mix" || name == "--transfer" || name == "--neighborhood"
-        || name == "--choosy";
+        || name == "--mix" || name == "--transfer" || name == "--neighborhood" || name == "--choosy"
+        || name == "--cascade";
 }
 
 // What the pre-pass knows of each item on the stack.
 enum class Kind { Image, Analysis, Solid };
 
 // Checks a command's options (throws CliError) and returns how many images it pops (a
-// command pushes one image back, --check leaves the one it reports on). Files a command
-// writes besides -o (map= of --neighborhood and --choosy) are added to `outputs`.
-int check_command(
-    const std::string& name, const std::string& modifiers, std::vector<std::string>& outputs)
+// command pushes one image back, --check leaves the one it reports on; --cascade pops the
+// current image if there is one). Files a command writes besides -o (map= of
+// --neighborhood and --choosy) are added to `outputs`, files it reads besides the stack
+// (dilation= of --cascade) to `inputs`.
+int check_command(const std::string& name, const std::string& modifiers,
+    std::vector<std::string>& outputs, std::vector<std::string>& inputs)
 {
     if (name == "--mix")
         return parse_mix_options(name, modifiers).nsamples();
@@ -69,6 +71,13 @@ int check_command(
         parse_analyze_options(name, modifiers);
     } else if (name == "--solid") {
         parse_modifiers(name, modifiers, SolidOptions::table());
+    } else if (name == "--cascade") {
+        const std::string dilation = parse_cascade_command(name, modifiers).dilation;
+        std::error_code ec;
+        if (!dilation.empty() && !std::filesystem::is_regular_file(dilation, ec))
+            throw CliError(name + " : dilation=" + dilation + " : no such file");
+        if (!dilation.empty())
+            inputs.push_back(dilation);
     } else if (name == "--neighborhood" || name == "--choosy") {
         const std::string map = name == "--choosy"
             ? parse_map_command<ChoosyOptions>(name, modifiers).map
@@ -241,7 +250,9 @@ Early parse_globals(CliState& state, const std::vector<std::string>& args)
             if (!is_command(name))
                 throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
             check_written(i);
-            const int n = check_command(name, modifiers, side_outputs);
+            int n = check_command(name, modifiers, side_outputs, inputs);
+            if (name == "--cascade" && stack.empty())
+                n = 0; // a generator
             const std::vector<Kind> popped = pop(name, n);
             check_command_inputs(name, popped);
             check = check || name == "--check";
@@ -346,6 +357,8 @@ void run(CliState& state, const std::vector<std::string>& args)
                 run_neighborhood(state, name, modifiers);
             else if (name == "--choosy")
                 run_choosy(state, name, modifiers);
+            else if (name == "--cascade")
+                run_cascade(state, name, modifiers);
         } else {
             push_input(state, a);
         }

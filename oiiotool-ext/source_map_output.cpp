@@ -9,26 +9,35 @@
 
 namespace texsyn::cli {
 
-std::string take_map_modifier(
-    const std::string& command, const std::string& modifiers, std::string& map)
+std::string take_file_modifier(const std::string& command, const std::string& modifiers,
+    const std::string& name, std::string& file)
 {
     std::vector<std::pair<std::string, std::string>> pairs;
     std::string error;
     if (!split_option_string(modifiers, pairs, error))
         throw CliError(command + " : " + error);
     std::string rest;
-    for (auto& [name, value] : pairs) {
-        if (name != "map") {
-            rest += (rest.empty() ? "" : ":") + name + "=" + value;
+    for (auto& [key, value] : pairs) {
+        if (key != name) {
+            rest += (rest.empty() ? "" : ":") + key + "=" + value;
             continue;
         }
-        if (!map.empty())
-            throw CliError(command + " : map is given twice");
-        if (!OIIO::Strutil::iends_with(value, ".exr"))
-            throw CliError(command + " : map=" + value
-                + " : the source map is a 2-channel float OpenEXR; name it *.exr");
-        map = value;
+        if (!file.empty())
+            throw CliError(command + " : " + name + " is given twice");
+        if (value.empty())
+            throw CliError(command + " : " + name + "= needs a file name");
+        file = value;
     }
+    return rest;
+}
+
+std::string take_map_modifier(
+    const std::string& command, const std::string& modifiers, std::string& map)
+{
+    const std::string rest = take_file_modifier(command, modifiers, "map", map);
+    if (!map.empty() && !OIIO::Strutil::iends_with(map, ".exr"))
+        throw CliError(command + " : map=" + map
+            + " : the source map is a 2-channel float OpenEXR; name it *.exr");
     return rest;
 }
 

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: Apache-2.0
+// --cascade: iterated nonlinear maps and convolution in a multiscale cascade; a generator,
+// or a texture transfer from the current image.
+#include "cli_state.h"
+#include "quiet_stderr.h"
+
+#include <texsyn/io.h>
+
+namespace texsyn::cli {
+
+CascadeCommand parse_cascade_command(const std::string& command, const std::string& modifiers)
+{
+    CascadeCommand result;
+    const std::string rest = take_file_modifier(command, modifiers, "dilation", result.dilation);
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::string error;
+    if (split_option_string(rest, pairs, error))
+        for (const auto& pair : pairs)
+            result.sized = result.sized || pair.first == "size";
+    result.options = parse_modifiers(command, rest, CascadeOptions::table());
+    if (!result.options.validate(error))
+        throw CliError(command + " : " + error);
+    return result;
+}
+
+void run_cascade(CliState& state, const std::string& command, const std::string& modifiers)
+{
+    CascadeCommand parsed = parse_cascade_command(command, modifiers);
+    CascadeOptions& opt = parsed.options;
+    opt.seed = state.seed;
+    opt.nthreads = state.threads;
+
+    OIIO::ImageBuf dilation;
+    if (!parsed.dilation.empty()) {
+        std::string error;
+        bool ok;
+        {
+            QuietStderr quiet;
+            ok = read_image(parsed.dilation, dilation, error); // a control image: no colour
+        }
+        if (!ok)
+            throw CliError(command + " : dilation=" + error);
+    }
+
+    // A generator's result is written like a float input's: scene-linear in float files,
+    // and in the space of untagged integer files (sRGB) in integer ones.
+    StackImage initial;
+    const bool transfer = !state.stack.empty();
+    if (transfer) {
+        initial = state.pop(command);
+        if (!parsed.sized) {
+            opt.width = initial.buf.spec().width;
+            opt.height = initial.buf.spec().height;
+        }
+    } else {
+        initial.input_colorspace
+            = state.colors().guess_colorspace(OIIO::ImageSpec(1, 1, 3, OIIO::TypeUInt8));
+        initial.input_format = OIIO::TypeUnknown;
+        initial.output_colorspace = state.pending_tocolorspace;
+    }
+    run_synthesis(
+        state, command, synthesis_result(initial, initial.sources), "", [&](StackImage& r) {
+            return cascade_synthesize(r.buf, opt, transfer ? &initial.buf : nullptr,
+                parsed.dilation.empty() ? nullptr : &dilation);
+        });
+}
+
+} // namespace texsyn::cli

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: Apache-2.0
+// End-to-end runs of --cascade: as a generator, as a texture transfer, with a dilation
+// control image, bad input included.
+#include "cli_fixture.h"
+
+namespace {
+
+// A one-channel control image of constant `value`.
+void write_control(const fs::path& path, float value)
+{
+    OIIO::ImageBuf buf(OIIO::ImageSpec(16, 16, 1, OIIO::TypeFloat));
+    OIIO::ImageBufAlgo::fill(buf, { value });
+    ASSERT_TRUE(buf.write(path.string(), OIIO::TypeFloat)) << buf.geterror();
+}
+
+} // namespace
+
+TEST_F(Cli, CascadeGeneratesAnImageWithoutInput)
+{
+    CliRun r = texsyn("--cascade:size=48x32:levels=2:r=3.9 -o out.exr -o out.png");
+    ASSERT_EQ(r.status, 0) << r.err;
+    OIIO::ImageBuf exr = read("out.exr");
+    EXPECT_EQ(exr.spec().width, 48);
+    EXPECT_EQ(exr.spec().height, 32);
+    EXPECT_EQ(exr.nchannels(), 1);
+    EXPECT_EQ(exr.spec().get_string_attribute("synth:method"), "cascade");
+    EXPECT_NE(exr.spec().get_string_attribute("synth:options").find("size=48x32:levels=2:"),
+        std::string::npos);
+    EXPECT_EQ(file_type("out.exr"), OIIO::TypeHalf);
+    // Integer files get the space of untagged integer samples, as a float input's result does.
+    EXPECT_EQ(file_type("out.png"), OIIO::TypeUInt8);
+    EXPECT_EQ(read("out.png").spec().get_string_attribute("synth:colorspace"), "sRGB - Texture");
+    // ramp= makes RGB.
+    r = texsyn("--cascade:size=16x16:ramp=0,0,0,1,0.5,0.1 -o ramp.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read("ramp.exr").nchannels(), 3);
+    // So does a preset's ramp; options after the preset override it.
+    r = texsyn("--cascade:size=16x16:preset=cells:ramp=none -o preset.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read("preset.exr").nchannels(), 1);
+}
+
+TEST_F(Cli, CascadeIsTheSameAtAnyThreadCount)
+{
+    write_control(dir / "ctrl.exr", 0.5f);
+    const std::string command = "--cascade:size=64x48:levels=3:noise=0,0.3:kernel=aniso5:angle=30:"
+                                "dmin=1:dmax=2:dilation=ctrl.exr:ramp=0,0,0,1,1,0.5,0.2,0.3,1";
+    for (const char* threads : { "1", "2" })
+        ASSERT_EQ(texsyn(std::string("--seed 7 --threads ") + threads + " " + command
+                      + " -d float -o t" + threads + ".exr")
+                      .status,
+            0);
+    EXPECT_EQ(pixel_hash(read("t1.exr")), pixel_hash(read("t2.exr")));
+}
+
+TEST_F(Cli, CascadeTransfersFromTheCurrentImageAtItsSize)
+{
+    CliRun r = texsyn("stucco.png --cascade:levels=2 -d float -o out.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    OIIO::ImageBuf out = read("out.exr");
+    EXPECT_EQ(out.spec().width, 128); // stucco_yellow.png's size
+    EXPECT_EQ(out.spec().height, 128);
+    EXPECT_EQ(out.nchannels(), 1);
+    EXPECT_EQ(out.spec().get_string_attribute("synth:sample"), "stucco.png");
+    // The start differs from noise: the result is not the generator's.
+    ASSERT_EQ(texsyn("--cascade:size=128x128:levels=2 -d float -o noise.exr").status, 0);
+    EXPECT_NE(pixel_hash(read("noise.exr")), pixel_hash(out));
+
+    r = texsyn("stucco.png --cascade:size=40x24:transfer=channels -o small.exr -o small.png");
+    ASSERT_EQ(r.status, 0) << r.err;
+    OIIO::ImageBuf small = read("small.exr");
+    EXPECT_EQ(small.spec().width, 40);
+    EXPECT_EQ(small.spec().height, 24);
+    EXPECT_EQ(small.nchannels(), 3);
+    // An 8-bit sample's result is written in its space, as the other commands do.
+    EXPECT_EQ(read("small.png").spec().get_string_attribute("synth:colorspace"), "sRGB - Texture");
+}
+
+TEST_F(Cli, CascadeDilationOfOneEverywhereIsNoDilation)
+{
+    write_control(dir / "ctrl.exr", 0.0f);
+    const std::string command = "--cascade:size=32x32:levels=2:kernel=gauss7";
+    ASSERT_EQ(texsyn(command + ":dmin=1:dmax=4:dilation=ctrl.exr -d float -o a.exr").status, 0);
+    ASSERT_EQ(texsyn(command + " -d float -o b.exr").status, 0);
+    EXPECT_EQ(pixel_hash(read("a.exr")), pixel_hash(read("b.exr")));
+    // The control image matters: at 1 the taps spread by dmax.
+    write_control(dir / "ctrl.exr", 1.0f);
+    ASSERT_EQ(texsyn(command + ":dmin=1:dmax=4:dilation=ctrl.exr -d float -o c.exr").status, 0);
+    EXPECT_NE(pixel_hash(read("c.exr")), pixel_hash(read("b.exr")));
+}
+
+TEST_F(Cli, BadCascadeRequestsAreRefused)
+{
+    expect_failure("--cascade:map=henon -o out.exr",
+        "texsyn ERROR: --cascade : map=henon is not one of logistic|sine|tent|cubic|curve");
+    expect_failure("--cascade:r=4.5 -o out.exr",
+        "texsyn ERROR: --cascade : r=4.5 : 4.5 is out of range (0..4)");
+    expect_failure("--cascade:levels=2:iterations=1,2,3 -o out.exr",
+        "texsyn ERROR: --cascade : iterations=1,2,3 has 3 values for levels=2 (give 1..2)");
+    expect_failure("--cascade:kernel=custom:ksize=3:weights=1,2,1 -o out.exr",
+        "texsyn ERROR: --cascade : kernel=custom with ksize=3 needs 9 weights (got 3)");
+    expect_failure("--cascade:levels -o out.exr",
+        "texsyn ERROR: --cascade : malformed option 'levels' (expected name=value)");
+    expect_failure("--cascade:dilation=ctrl.exr -o out.exr",
+        "texsyn ERROR: --cascade : dilation=ctrl.exr : no such file");
+    expect_failure("--cascade:dilation=stucco.png:dilation=stucco.png -o out.exr",
+        "texsyn ERROR: --cascade : dilation is given twice");
+    // The library's checks of the control image, passed through.
+    expect_failure("--cascade:size=16x16:dilation=stucco.png -o out.exr",
+        "texsyn ERROR: --cascade : the dilation control image has 3 channels; expected 1");
+    // A failure after an -o that succeeded leaves nothing behind either.
+    expect_failure("stucco.png -o first.exr --cascade:transfer=channels:ramp=0,0,0,1,1,1 "
+                   "-o second.exr",
+        "texsyn ERROR: --cascade : ramp= colours one lattice; with transfer=channels there are 3");
+    write_control(dir / "ctrl.exr", 0.0f);
+    expect_failure("--cascade:dilation=ctrl.exr -o ctrl.exr",
+        "texsyn ERROR: -o ctrl.exr : refusing to overwrite the input ctrl.exr",
+        { "stucco.png", "ctrl.exr" });
+}
