@@ -130,5 +130,13 @@ done
 oiiotool "$samples/wood_grain.png" "$out/ch_iso0.png" "$out/ch_iso1.png" --mosaic:pad=4 3x1 \
     -o "$out/choosy_wood_isotropic.png"
 rm -f "$out"/ch_*
+# docs/cascade.md: the six presets, 256x256, seed 1, no input.
+presets=()
+for p in cells blotches fibres bands caustics stone; do
+  "$texsyn" --seed 1 --cascade:preset=$p:size=256x256 -o "$out/cc_$p.png"
+  presets+=("$out/cc_$p.png")
+done
+oiiotool "${presets[@]}" --mosaic:pad=4 3x2 -o "$out/cascade_presets.png"
+rm -f "$out"/cc_*
 rm -f "$out/stucco_tile.png" "$out/rust.tsa"
 ls -la "$out"

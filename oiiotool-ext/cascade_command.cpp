@@ -11,7 +11,9 @@ namespace texsyn::cli {
 CascadeCommand parse_cascade_command(const std::string& command, const std::string& modifiers)
 {
     CascadeCommand result;
-    const std::string rest = take_file_modifier(command, modifiers, "dilation", result.dilation);
+    std::string rest = take_file_modifier(command, modifiers, "dilation", result.dilation);
+    rest = take_file_modifier(command, rest, "rotation", result.rotation);
+    rest = take_file_modifier(command, rest, "palette", result.palette);
     std::vector<std::pair<std::string, std::string>> pairs;
     std::string error;
     if (split_option_string(rest, pairs, error))
@@ -23,6 +25,36 @@ CascadeCommand parse_cascade_command(const std::string& command, const std::stri
     return result;
 }
 
+std::vector<std::string> CascadeCommand::files() const
+{
+    std::vector<std::string> names;
+    for (const std::string* f : { &dilation, &rotation, &palette })
+        if (!f->empty())
+            names.push_back(*f);
+    return names;
+}
+
+namespace {
+
+// A control image read as its file's numbers (no colour conversion); empty if no name.
+OIIO::ImageBuf read_control(const std::string& command, const char* what, const std::string& file)
+{
+    OIIO::ImageBuf image;
+    if (file.empty())
+        return image;
+    std::string error;
+    bool ok;
+    {
+        QuietStderr quiet;
+        ok = read_image(file, image, error);
+    }
+    if (!ok)
+        throw CliError(command + " : " + what + "=" + error);
+    return image;
+}
+
+} // namespace
+
 void run_cascade(CliState& state, const std::string& command, const std::string& modifiers)
 {
     CascadeCommand parsed = parse_cascade_command(command, modifiers);
@@ -30,17 +62,8 @@ void run_cascade(CliState& state, const std::string& command, const std::string&
     opt.seed = state.seed;
     opt.nthreads = state.threads;
 
-    OIIO::ImageBuf dilation;
-    if (!parsed.dilation.empty()) {
-        std::string error;
-        bool ok;
-        {
-            QuietStderr quiet;
-            ok = read_image(parsed.dilation, dilation, error); // a control image: no colour
-        }
-        if (!ok)
-            throw CliError(command + " : dilation=" + error);
-    }
+    const OIIO::ImageBuf dilation = read_control(command, "dilation", parsed.dilation);
+    const OIIO::ImageBuf rotation = read_control(command, "rotation", parsed.rotation);
 
     // A generator's result is written like a float input's: scene-linear in float files,
     // and in the space of untagged integer files (sRGB) in integer ones.
@@ -58,10 +81,18 @@ void run_cascade(CliState& state, const std::string& command, const std::string&
         initial.input_format = OIIO::TypeUnknown;
         initial.output_colorspace = state.pending_tocolorspace;
     }
+    // The palette is read like any input (so in scene-linear), after the initial image.
+    StackImage palette;
+    if (!parsed.palette.empty()) {
+        push_input(state, parsed.palette);
+        palette = state.pop(command);
+    }
     run_synthesis(
         state, command, synthesis_result(initial, initial.sources), "", [&](StackImage& r) {
             return cascade_synthesize(r.buf, opt, transfer ? &initial.buf : nullptr,
-                parsed.dilation.empty() ? nullptr : &dilation);
+                parsed.dilation.empty() ? nullptr : &dilation,
+                parsed.rotation.empty() ? nullptr : &rotation,
+                parsed.palette.empty() ? nullptr : &palette.buf);
         });
 }
 

@@ -276,12 +276,16 @@ void run_neighborhood(CliState& state, const std::string& command, const std::st
 /// the synthesis; with map=FILE also writes the source map.
 void run_choosy(CliState& state, const std::string& command, const std::string& modifiers);
 
-/// --cascade's options and the tool's own dilation=FILE (the control image to read: a file
-/// name, so not a method option); `sized` says whether size= was given.
+/// --cascade's options and the tool's own file options (file names, so not method
+/// options): dilation=FILE and rotation=FILE (control images, read Raw) and palette=FILE
+/// (an image whose colours, read like any input, colour the result); `sized` says whether
+/// size= was given.
 struct CascadeCommand {
     CascadeOptions options;
-    std::string dilation;
+    std::string dilation, rotation, palette;
     bool sized = false;
+    /// The files it reads, in option order (empty names skipped).
+    std::vector<std::string> files() const;
 };
 
 /// Parses and validates --cascade's modifiers; throws CliError naming the command.
@@ -290,7 +294,8 @@ CascadeCommand parse_cascade_command(const std::string& command, const std::stri
 /// --cascade[:name=value…]: iterated nonlinear maps and convolution in a multiscale
 /// cascade. A generator: with no image on the stack it pushes a new one; else it pops the
 /// image, uses it as the initial lattice (texture transfer, at the image's size unless
-/// size= is given) and pushes the result. dilation=FILE reads the control image (Raw).
+/// size= is given) and pushes the result. dilation=FILE and rotation=FILE read control
+/// images (Raw); palette=FILE reads an image whose colours the result takes.
 void run_cascade(CliState& state, const std::string& command, const std::string& modifiers);
 
 /// --apply-map MAP IMAGE: reads IMAGE (an input like any other), rearranges its pixels by

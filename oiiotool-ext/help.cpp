@@ -118,8 +118,11 @@ void print_help()
         "                          texture transfer from it, at its size unless size= is\n"
         "                          given. dilation=FILE reads a one-channel control image\n"
         "                          (no colour conversion) that spreads the kernel's taps by\n"
-        "                          dmin..dmax. The result is scene-linear (one channel Y,\n"
-        "                          or RGB with ramp=). Options:\n");
+        "                          dmin..dmax; rotation=FILE one that turns them by 0..1\n"
+        "                          turns; palette=FILE an image whose colours, by luminance\n"
+        "                          rank, colour the result (instead of ramp=). The result\n"
+        "                          is scene-linear (one channel Y, or RGB with ramp= or\n"
+        "                          palette=). Options:\n");
     print_table(CascadeOptions::table(), CascadeOptions());
     std::printf(
         "    --apply-map MAP IMAGE Read IMAGE (aligned with the sample of a --neighborhood\n"

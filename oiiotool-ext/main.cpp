@@ -54,7 +54,7 @@ enum class Kind { Image, Analysis, Solid };
 // command pushes one image back, --check leaves the one it reports on; --cascade pops the
 // current image if there is one). Files a command writes besides -o (map= of
 // --neighborhood and --choosy) are added to `outputs`, files it reads besides the stack
-// (dilation= of --cascade) to `inputs`.
+// (dilation=, rotation= and palette= of --cascade) to `inputs`.
 int check_command(const std::string& name, const std::string& modifiers,
     std::vector<std::string>& outputs, std::vector<std::string>& inputs)
 {
@@ -72,12 +72,16 @@ int check_command(const std::string& name, const std::string& modifiers,
     } else if (name == "--solid") {
         parse_modifiers(name, modifiers, SolidOptions::table());
     } else if (name == "--cascade") {
-        const std::string dilation = parse_cascade_command(name, modifiers).dilation;
-        std::error_code ec;
-        if (!dilation.empty() && !std::filesystem::is_regular_file(dilation, ec))
-            throw CliError(name + " : dilation=" + dilation + " : no such file");
-        if (!dilation.empty())
-            inputs.push_back(dilation);
+        const CascadeCommand cascade = parse_cascade_command(name, modifiers);
+        for (const auto& [key, file] : { std::pair { "dilation", &cascade.dilation },
+                 { "rotation", &cascade.rotation }, { "palette", &cascade.palette } }) {
+            std::error_code ec;
+            if (file->empty())
+                continue;
+            if (!std::filesystem::is_regular_file(*file, ec))
+                throw CliError(name + " : " + key + "=" + *file + " : no such file");
+            inputs.push_back(*file);
+        }
     } else if (name == "--neighborhood" || name == "--choosy") {
         const std::string map = name == "--choosy"
             ? parse_map_command<ChoosyOptions>(name, modifiers).map

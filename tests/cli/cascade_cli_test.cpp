@@ -117,3 +117,28 @@ TEST_F(Cli, BadCascadeRequestsAreRefused)
         "texsyn ERROR: -o ctrl.exr : refusing to overwrite the input ctrl.exr",
         { "stucco.png", "ctrl.exr" });
 }
+
+// rotation= and palette= read their files: a rotation of 0 changes nothing; a palette
+// colours the result with the palette image's colours (here one flat colour, read from an
+// sRGB PNG like any input: 8-bit 128 is 0.2158 in scene-linear).
+TEST_F(Cli, CascadeRotationAndPalette)
+{
+    write_control(dir / "zero.exr", 0.0f);
+    OIIO::ImageBuf flat(OIIO::ImageSpec(8, 8, 3, OIIO::TypeUInt8));
+    OIIO::ImageBufAlgo::fill(flat, { 128 / 255.0f, 128 / 255.0f, 128 / 255.0f });
+    ASSERT_TRUE(flat.write((dir / "flat.png").string()));
+    ASSERT_EQ(texsyn("--cascade:size=32x32:kernel=aniso5 -d float -o plain.exr").status, 0);
+    CliRun r
+        = texsyn("--cascade:size=32x32:kernel=aniso5:rotation=zero.exr -d float -o turned.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(pixel_hash(read("plain.exr")), pixel_hash(read("turned.exr")));
+    r = texsyn("--cascade:size=32x32:palette=flat.png -o coloured.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const OIIO::ImageBuf coloured = read("coloured.exr");
+    ASSERT_EQ(coloured.nchannels(), 3);
+    EXPECT_NEAR(coloured.getchannel(5, 5, 0, 0), 0.2158f, 2e-3);
+    r = texsyn("--cascade:size=32x32:palette=missing.png -o x.exr");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("palette=missing.png : no such file"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "x.exr"));
+}
