@@ -48,7 +48,7 @@ void run_workload(benchmark::State& state, const Workload& w)
     CascadeOptions opt;
     opt.width = opt.height = w.size;
     opt.levels = w.levels;
-    opt.kernel = CascadeKernel::Gauss7;
+    opt.kernel = { CascadeKernel::Gauss7 };
     opt.dmin = 1.0f;
     opt.dmax = 3.0f;
     opt.nthreads = 2;

@@ -108,11 +108,11 @@ TEST(CascadeKernels, ConvolutionMatchesTheDirectSum)
             CascadeKernel::Gauss5, CascadeKernel::Gauss7, CascadeKernel::Dog5, CascadeKernel::Dog7,
             CascadeKernel::Aniso5, CascadeKernel::Aniso7, CascadeKernel::Custom }) {
         CascadeOptions opt;
-        opt.kernel = k;
-        opt.angle = 30.0f;
+        opt.kernel = { k };
+        opt.angle = { 30.0f };
         opt.ksize = 3;
         opt.weights = { 1, 2, 1, 0, 4, 0, -1, 2, 3 };
-        const detail::CascadeKernelWeights weights = detail::cascade_kernel(opt);
+        const detail::CascadeKernelWeights weights = detail::cascade_kernel(opt, 0);
         double sum = 0;
         for (float w : weights.weights)
             sum += w;
@@ -129,11 +129,11 @@ TEST(CascadeKernels, ConvolutionMatchesTheDirectSum)
 TEST(CascadeKernels, AnisotropicKernelFollowsItsAngle)
 {
     CascadeOptions opt;
-    opt.kernel = CascadeKernel::Aniso7;
-    const detail::CascadeKernelWeights k0 = detail::cascade_kernel(opt);
+    opt.kernel = { CascadeKernel::Aniso7 };
+    const detail::CascadeKernelWeights k0 = detail::cascade_kernel(opt, 0);
     EXPECT_GT(k0.at(6, 3), 10 * k0.at(3, 6));
-    opt.angle = 90.0f;
-    const detail::CascadeKernelWeights k90 = detail::cascade_kernel(opt);
+    opt.angle = { 90.0f };
+    const detail::CascadeKernelWeights k90 = detail::cascade_kernel(opt, 0);
     EXPECT_GT(k90.at(3, 6), 10 * k90.at(6, 3));
 }
 
@@ -143,8 +143,8 @@ TEST(CascadeDilation, OneEqualsTheUndilatedOperator)
 {
     const Plane in = random_plane(40, 30, 2);
     CascadeOptions opt;
-    opt.kernel = CascadeKernel::Gauss5;
-    const detail::CascadeKernelWeights k = detail::cascade_kernel(opt);
+    opt.kernel = { CascadeKernel::Gauss5 };
+    const detail::CascadeKernelWeights k = detail::cascade_kernel(opt, 0);
     Plane plain, dilated;
     detail::convolve_circular(in, k, plain, 1);
     detail::convolve_warped(in, k, Plane(40, 30, 1.0f), Plane(40, 30, 0.0f), dilated, 2);
@@ -262,13 +262,13 @@ TEST(Cascade, RefusesBadOptions)
         return out.geterror();
     };
     CascadeOptions opt = options(64, 64);
-    opt.map = CascadeMap::Curve;
+    opt.map = { CascadeMap::Curve };
     opt.curve = { 0, 0 };
     EXPECT_NE(error_of(opt).find("at least 2 points"), std::string::npos);
     opt.curve = { 0.5f, 0, 0.2f, 1 };
     EXPECT_NE(error_of(opt).find("x must increase"), std::string::npos);
     opt = options(64, 64);
-    opt.kernel = CascadeKernel::Custom;
+    opt.kernel = { CascadeKernel::Custom };
     opt.ksize = 3;
     opt.weights = { 1, 2, 3 };
     EXPECT_NE(error_of(opt).find("needs 9 weights"), std::string::npos);
@@ -301,7 +301,7 @@ TEST(Cascade, PresetsAreDistinctLooks)
     std::string error;
     ASSERT_TRUE(table.set(opt, "preset", "cells", error));
     ASSERT_TRUE(table.set(opt, "r", "3.5", error));
-    EXPECT_EQ(opt.kernel, CascadeKernel::Dog7);
+    EXPECT_EQ(opt.kernel, std::vector<CascadeKernel> { CascadeKernel::Dog7 });
     EXPECT_EQ(opt.r, std::vector<float> { 3.5f });
     EXPECT_FALSE(table.set(opt, "preset", "plaid", error));
     EXPECT_NE(error.find("cells|blotches"), std::string::npos);
@@ -320,7 +320,7 @@ TEST(CascadeRotation, QuarterTurnTurnsThePattern)
         return buf;
     };
     CascadeOptions opt = options(96, 96);
-    opt.kernel = CascadeKernel::Aniso7;
+    opt.kernel = { CascadeKernel::Aniso7 };
     const OIIO::ImageBuf zero = control(0.0f), quarter = control(0.25f);
     const OIIO::ImageBuf plain = cascade_synthesize(opt);
     EXPECT_EQ(pixel_hash(cascade_synthesize(opt, nullptr, nullptr, &zero)), pixel_hash(plain));
@@ -357,4 +357,28 @@ TEST(Cascade, PaletteGivesTheImagesColours)
     OIIO::ImageBuf dst;
     EXPECT_FALSE(cascade_synthesize(dst, opt, nullptr, nullptr, nullptr, &palette));
     EXPECT_NE(dst.geterror().find("palette"), std::string::npos);
+}
+
+// Every operator option can change from level to level: map=, kernel= and angle= lists.
+TEST(Cascade, EachLevelHasItsOwnOperator)
+{
+    const OptionTable<CascadeOptions>& table = CascadeOptions::table();
+    CascadeOptions opt = options(64, 64);
+    std::string error;
+    ASSERT_TRUE(table.set(opt, "levels", "2", error));
+    const std::string same = pixel_hash(cascade_synthesize(opt));
+    ASSERT_TRUE(table.set(opt, "map", "logistic,sine", error)) << error;
+    ASSERT_TRUE(table.set(opt, "kernel", "gauss5,aniso7", error)) << error;
+    ASSERT_TRUE(table.set(opt, "angle", "0,45", error)) << error;
+    EXPECT_EQ(opt.map, (std::vector<CascadeMap> { CascadeMap::Logistic, CascadeMap::Sine }));
+    EXPECT_EQ(table.find("kernel")->format(opt), "gauss5,aniso7");
+    const OIIO::ImageBuf out = cascade_synthesize(opt);
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    EXPECT_NE(pixel_hash(out), same);
+    EXPECT_FALSE(table.set(opt, "kernel", "gauss5,plaid", error));
+    EXPECT_NE(error.find("plaid"), std::string::npos);
+    ASSERT_TRUE(table.set(opt, "map", "logistic,sine,tent", error));
+    OIIO::ImageBuf dst;
+    EXPECT_FALSE(cascade_synthesize(dst, opt));
+    EXPECT_NE(dst.geterror().find("levels=2"), std::string::npos);
 }

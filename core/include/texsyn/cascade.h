@@ -47,18 +47,19 @@ enum class CascadeTransfer {
     Channels,  ///< one lattice per channel, each clamped to [0, 1]
 };
 
-/// Options of the cascade. Per-level lists run coarsest level first (level 0 is the
-/// coarsest); levels missing from a list repeat its last value.
+/// Options of the cascade. Per-level lists (iterations, map, r, kernel, angle, noise) run
+/// coarsest level first (level 0 is the coarsest); levels missing from a list repeat its
+/// last value.
 struct CascadeOptions {
     int width = 512; ///< output size (the finest level)
     int height = 512;
     int levels = 1; ///< cascade levels; level l is the output halved levels-1-l times
-    std::vector<int> iterations = { 5 }; ///< per level
-    CascadeMap map = CascadeMap::Logistic;
-    std::vector<float> r = { 3.9f }; ///< per level
-    std::vector<float> curve;        ///< map=curve: x0,y0,x1,y1,… with x increasing in [0, 1]
-    CascadeKernel kernel = CascadeKernel::Gauss5;
-    float angle = 0.0f;                  ///< aniso kernels: degrees from the x axis
+    std::vector<int> iterations = { 5 };                    ///< per level
+    std::vector<CascadeMap> map = { CascadeMap::Logistic }; ///< per level
+    std::vector<float> r = { 3.9f };                        ///< per level
+    std::vector<float> curve; ///< map=curve: x0,y0,x1,y1,… with x increasing in [0, 1]
+    std::vector<CascadeKernel> kernel = { CascadeKernel::Gauss5 }; ///< per level
+    std::vector<float> angle = { 0.0f }; ///< per level, aniso kernels: degrees from x
     int ksize = 3;                       ///< kernel=custom: side (odd, 1..7)
     std::vector<float> weights;          ///< kernel=custom: ksize^2 weights, normalised
     std::vector<float> noise = { 0.0f }; ///< per level > 0: weight of fresh noise mixed in

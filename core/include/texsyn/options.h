@@ -237,6 +237,55 @@ public:
             [=](const T& t) { return format_int_list(t.*member); } });
         return *this;
     }
+    /// A non-empty list of up to `max_count` enum values chosen by name, written "a,b,c".
+    template <class E>
+    OptionTable& choices(const char* name, std::vector<E> T::*member,
+        std::vector<std::pair<std::string, E>> values, size_t max_count, const char* help)
+    {
+        std::string nm = name;
+        std::string allowed;
+        for (auto& v : values)
+            allowed += (allowed.empty() ? "" : "|") + v.first;
+        m_fields.push_back({ nm, help,
+            "up to " + std::to_string(max_count) + " of " + allowed + ", comma-separated",
+            OptionType::Choice,
+            [=](T& t, std::string_view v, std::string& err) {
+                std::vector<E> list;
+                while (true) {
+                    const size_t comma = v.find(',');
+                    const std::string_view item = v.substr(0, comma);
+                    bool found = false;
+                    for (auto& c : values)
+                        if (c.first == item) {
+                            list.push_back(c.second);
+                            found = true;
+                        }
+                    if (!found) {
+                        err = nm + "=" + std::string(item) + " is not one of " + allowed;
+                        return false;
+                    }
+                    if (comma == std::string_view::npos)
+                        break;
+                    v.remove_prefix(comma + 1);
+                }
+                if (list.size() > max_count) {
+                    err = nm + " has " + std::to_string(list.size()) + " values (at most "
+                        + std::to_string(max_count) + ")";
+                    return false;
+                }
+                t.*member = std::move(list);
+                return true;
+            },
+            [=](const T& t) {
+                std::string text;
+                for (const E& e : t.*member)
+                    for (auto& c : values)
+                        if (c.second == e)
+                            text += (text.empty() ? "" : ",") + c.first;
+                return text;
+            } });
+        return *this;
+    }
     /// An enum member chosen by name.
     template <class E>
     OptionTable& choice(const char* name, E T::*member,

@@ -2,6 +2,7 @@
 // The cascade's convolution kernels (cascade_pvt.h).
 #include "cascade_pvt.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -52,13 +53,15 @@ int preset_size(CascadeKernel k)
 
 } // namespace
 
-CascadeKernelWeights cascade_kernel(const CascadeOptions& opt)
+CascadeKernelWeights cascade_kernel(const CascadeOptions& opt, int level)
 {
-    if (opt.kernel == CascadeKernel::Custom)
+    auto at = [level](const auto& v) { return v[size_t(std::min<int>(level, int(v.size()) - 1))]; };
+    const CascadeKernel kernel = at(opt.kernel);
+    if (kernel == CascadeKernel::Custom)
         return normalised(opt.ksize, std::vector<double>(opt.weights.begin(), opt.weights.end()));
-    const int n = preset_size(opt.kernel);
+    const int n = preset_size(kernel);
     const double size = n;
-    switch (opt.kernel) {
+    switch (kernel) {
     case CascadeKernel::Box3:
     case CascadeKernel::Box5:
     case CascadeKernel::Box7:
@@ -76,7 +79,7 @@ CascadeKernelWeights cascade_kernel(const CascadeOptions& opt)
     }
     case CascadeKernel::Aniso5:
     case CascadeKernel::Aniso7:
-        return normalised(n, gaussian(n, size / 3, size / 10, opt.angle));
+        return normalised(n, gaussian(n, size / 3, size / 10, at(opt.angle)));
     default:
         return normalised(n, gaussian(n, size / 4, size / 4, 0));
     }

@@ -2,6 +2,7 @@
 // The cascade's options: table and validation.
 #include <texsyn/cascade.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace texsyn {
@@ -48,24 +49,29 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
         t.integers("iterations", &O::iterations, 1, kMaxIterations, size_t(kMaxLevels),
             "iterations of A <- p(N(A)) per level, coarsest first (a missing level repeats the "
             "last value)");
-        t.choice("map", &O::map,
+        t.choices("map", &O::map,
             { { "logistic", CascadeMap::Logistic }, { "sine", CascadeMap::Sine },
                 { "tent", CascadeMap::Tent }, { "cubic", CascadeMap::Cubic },
                 { "curve", CascadeMap::Curve } },
-            "the pointwise map p: logistic r x(1-x), sine r/4 sin(pi x), tent r/4 (1-|2x-1|), "
+            size_t(kMaxLevels),
+            "the pointwise map p per level, coarsest first: logistic r x(1-x), sine r/4 sin(pi x), "
+            "tent r/4 (1-|2x-1|), "
             "cubic (peak r/4), or curve (piecewise linear through `curve`)");
         t.numbers("r", &O::r, 0.0f, 4.0f, size_t(kMaxLevels), "none",
             "the map's parameter per level, coarsest first: its peak value is r/4");
         t.numbers("curve", &O::curve, 0.0f, 1.0f, 64, "none",
             "map=curve: x0,y0,x1,y1,... with x increasing (at least 2 points)");
-        t.choice("kernel", &O::kernel,
+        t.choices("kernel", &O::kernel,
             { { "box3", K::Box3 }, { "box5", K::Box5 }, { "box7", K::Box7 },
                 { "gauss3", K::Gauss3 }, { "gauss5", K::Gauss5 }, { "gauss7", K::Gauss7 },
                 { "dog5", K::Dog5 }, { "dog7", K::Dog7 }, { "aniso5", K::Aniso5 },
                 { "aniso7", K::Aniso7 }, { "custom", K::Custom } },
-            "the convolution N: box, Gaussian (sigma size/4), dog (Mexican hat), aniso "
+            size_t(kMaxLevels),
+            "the convolution N per level, coarsest first: box, Gaussian (sigma size/4), dog "
+            "(Mexican hat), aniso "
             "(Gaussian stretched along `angle`) of side 3, 5 or 7, or custom (`weights`)");
-        t.real("angle", &O::angle, -360.0f, 360.0f, "aniso kernels: direction in degrees");
+        t.numbers("angle", &O::angle, -360.0f, 360.0f, size_t(kMaxLevels), "none",
+            "aniso kernels: direction in degrees, per level, coarsest first");
         t.integer("ksize", &O::ksize, 1, 7, "kernel=custom: side of the kernel (odd)");
         t.numbers("weights", &O::weights, -100.0f, 100.0f, 49, "none",
             "kernel=custom: ksize x ksize weights, row by row (normalised to sum 1)");
@@ -106,9 +112,14 @@ bool CascadeOptions::validate(std::string& error) const
             + ")";
         return false;
     };
-    if (!per_level("r", r) || !per_level("noise", noise))
+    if (!per_level("r", r) || !per_level("noise", noise) || !per_level("angle", angle))
         return false;
-    if (map == CascadeMap::Curve) {
+    if (map.empty() || kernel.empty() || int(map.size()) > levels || int(kernel.size()) > levels) {
+        error = "map= and kernel= take 1.." + std::to_string(levels)
+            + " values for levels=" + std::to_string(levels);
+        return false;
+    }
+    if (std::find(map.begin(), map.end(), CascadeMap::Curve) != map.end()) {
         if (curve.size() < 4 || curve.size() % 2 != 0) {
             error = "map=curve needs curve=x0,y0,x1,y1,... with at least 2 points (got "
                 + std::to_string(curve.size()) + " values)";
@@ -120,7 +131,7 @@ bool CascadeOptions::validate(std::string& error) const
                 return false;
             }
     }
-    if (kernel == CascadeKernel::Custom) {
+    if (std::find(kernel.begin(), kernel.end(), CascadeKernel::Custom) != kernel.end()) {
         if (ksize % 2 == 0) {
             error = "ksize=" + std::to_string(ksize) + " is not odd";
             return false;

@@ -23,8 +23,9 @@ struct CascadeKernelWeights {
     float at(int i, int j) const { return weights[size_t(j) * size_t(size) + size_t(i)]; }
 };
 
-/// The kernel the options name (presets, or kernel=custom's normalised weights).
-CascadeKernelWeights cascade_kernel(const CascadeOptions& opt);
+/// The kernel the options name for cascade level `level` (presets, or kernel=custom's
+/// normalised weights).
+CascadeKernelWeights cascade_kernel(const CascadeOptions& opt, int level);
 
 /// out = N(in), circular: out(x, y) = sum_ij w(i, j) in(x + i - h, y + j - h), h = size / 2.
 /// Each row is a sum of shifted rows, so it vectorises; parallel over rows.

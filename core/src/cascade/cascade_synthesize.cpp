@@ -160,7 +160,6 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::Imag
         return false;
     }
 
-    const detail::CascadeKernelWeights kernel = detail::cascade_kernel(opt);
     std::vector<Plane> lattices = initial
         ? initial_lattices(input, opt.transfer)
         : std::vector<Plane> { detail::seeded_noise(sizes[0].w, sizes[0].h, opt.seed, 0) };
@@ -188,13 +187,15 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::Imag
             return false;
         }
         const float r = at_level(opt.r, l);
+        const CascadeMap map = at_level(opt.map, l);
+        const detail::CascadeKernelWeights kernel = detail::cascade_kernel(opt, l);
         for (Plane& a : lattices)
             for (int it = 0; it < at_level(opt.iterations, l); ++it) {
                 if (dilation || rotation)
                     detail::convolve_warped(a, kernel, spread, angle, scratch, opt.nthreads);
                 else
                     detail::convolve_circular(a, kernel, scratch, opt.nthreads);
-                detail::apply_cascade_map(scratch, opt.map, r, opt.curve, opt.nthreads);
+                detail::apply_cascade_map(scratch, map, r, opt.curve, opt.nthreads);
                 std::swap(a, scratch);
             }
     }
