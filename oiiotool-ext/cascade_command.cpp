@@ -6,12 +6,77 @@
 
 #include <texsyn/io.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
 namespace texsyn::cli {
+
+namespace {
+
+bool starts_number(const std::string& v)
+{
+    return !v.empty()
+        && (std::isdigit(static_cast<unsigned char>(v[0])) || v[0] == '-' || v[0] == '.'
+            || v[0] == '+');
+}
+
+// The shorthands, rewritten into options: `map=curve:x0,y0,…` (a piece without '='
+// after map=…curve) becomes curve=x0,y0,…; `kernel=w0,w1,…` (numbers) becomes
+// kernel=custom:weights=… with ksize the square root of their count unless given;
+// `ramp=FILE` (a name with a letter extension, e.g. rust.png) becomes palette=FILE.
+std::string expand_shorthands(const std::string& modifiers)
+{
+    std::vector<std::string> pieces;
+    std::string piece;
+    for (char c : modifiers + ":") {
+        if (c != ':') {
+            piece += c;
+            continue;
+        }
+        if (!piece.empty())
+            pieces.push_back(piece);
+        piece.clear();
+    }
+    bool has_ksize = false;
+    for (const std::string& p : pieces)
+        has_ksize = has_ksize || p.rfind("ksize=", 0) == 0;
+    std::string out, previous;
+    for (const std::string& p : pieces) {
+        std::string rewritten = p;
+        const size_t eq = p.find('=');
+        const std::string key = p.substr(0, eq),
+                          value = eq == std::string::npos ? "" : p.substr(eq + 1);
+        if (eq == std::string::npos && previous.rfind("map=", 0) == 0 && previous.size() >= 5
+            && previous.compare(previous.size() - 5, 5, "curve") == 0) {
+            rewritten = "curve=" + p;
+        } else if (key == "kernel" && starts_number(value)) {
+            const size_t n = size_t(std::count(value.begin(), value.end(), ',')) + 1;
+            const int side = int(std::lround(std::sqrt(double(n))));
+            rewritten = "kernel=custom:weights=" + value;
+            if (!has_ksize && size_t(side * side) == n)
+                rewritten += ":ksize=" + std::to_string(side);
+        } else if (key == "ramp") {
+            const std::string ext = std::filesystem::path(value).extension().string();
+            if (ext.size() > 1 && std::all_of(ext.begin() + 1, ext.end(), [](char c) {
+                    return std::isalpha(static_cast<unsigned char>(c));
+                }))
+                rewritten = "palette=" + value;
+        }
+        out += (out.empty() ? "" : ":") + rewritten;
+        previous = p;
+    }
+    return out;
+}
+
+} // namespace
 
 CascadeCommand parse_cascade_command(const std::string& command, const std::string& modifiers)
 {
     CascadeCommand result;
-    std::string rest = take_file_modifier(command, modifiers, "dilation", result.dilation);
+    std::string rest
+        = take_file_modifier(command, expand_shorthands(modifiers), "dilation", result.dilation);
     rest = take_file_modifier(command, rest, "rotation", result.rotation);
     rest = take_file_modifier(command, rest, "palette", result.palette);
     std::vector<std::pair<std::string, std::string>> pairs;

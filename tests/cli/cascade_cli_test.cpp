@@ -142,3 +142,17 @@ TEST_F(Cli, CascadeRotationAndPalette)
     EXPECT_NE(r.err.find("palette=missing.png : no such file"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "x.exr"));
 }
+
+// The shorthands: map=curve:x0,y0,…, kernel=w0,w1,… (ksize from their count) and
+// ramp=FILE (a palette) give the same pixels as the spelled-out options.
+TEST_F(Cli, CascadeShorthands)
+{
+    auto same = [&](const std::string& a, const std::string& b) {
+        EXPECT_EQ(texsyn("--cascade:size=24x24:" + a + " -d float -o a.exr").status, 0) << a;
+        EXPECT_EQ(texsyn("--cascade:size=24x24:" + b + " -d float -o b.exr").status, 0) << b;
+        EXPECT_EQ(pixel_hash(read("a.exr")), pixel_hash(read("b.exr"))) << a;
+    };
+    same("map=curve:0,0,0.3,0.9,1,0.2", "map=curve:curve=0,0,0.3,0.9,1,0.2");
+    same("kernel=1,2,1,2,4,2,1,2,1", "kernel=custom:ksize=3:weights=1,2,1,2,4,2,1,2,1");
+    same("ramp=stucco.png", "palette=stucco.png");
+}
