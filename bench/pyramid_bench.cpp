@@ -6,7 +6,7 @@
 // Each with every FFT backend this build has. `peak_MB` is the process's peak resident
 // memory so far: run one workload per process (bench/run.sh) to read it per workload.
 #include <texsyn/io.h>
-#include <texsyn/synthesis.h>
+#include <texsyn/pyramid_synthesis.h>
 
 #include <OpenImageIO/imagebufalgo.h>
 

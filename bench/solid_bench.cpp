@@ -7,7 +7,8 @@
 // `peak_MB` is the process's peak resident memory so far: run one workload per process
 // (bench/run.sh BUILD_DIR . solid_bench).
 #include <texsyn/io.h>
-#include <texsyn/synthesis.h>
+#include <texsyn/solid.h>
+#include <texsyn/volume.h>
 
 #include <stdexcept>
 
@@ -32,10 +33,10 @@ void run_workload(benchmark::State& state, const char* sample_name, int size, So
     opt.pyramid = kind;
     opt.nthreads = 2;
     for (auto _ : state) {
-        PlanarVolume out;
-        if (!solid_synthesize(out, sample, opt, error))
-            state.SkipWithError(error.c_str());
-        benchmark::DoNotOptimize(out.channels.data());
+        OIIO::ImageBuf out;
+        if (!solid_synthesize(out, sample, opt))
+            state.SkipWithError(out.geterror().c_str());
+        benchmark::DoNotOptimize(out.localpixels());
     }
     state.counters["peak_MB"] = peak_megabytes();
     state.counters["Mvoxels"] = double(size) * size * size / 1e6;

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-# Finds texsyn's dependencies on Debian 12, with the workarounds ../shared/ECOSYSTEM.md §1 verified.
+# Finds texsyn's dependencies on Debian 12, with workarounds for three broken package configs.
 find_package(PkgConfig REQUIRED)
 
 # OIIO's exported target lists /usr/include/opencv4 even when libopencv-dev is absent.
@@ -28,6 +28,6 @@ if(TEXSYN_WITH_FFTW)
 endif()
 
 # OpenVDB (solid textures' .vdb output): Debian ships a find module, not a config package.
-# It needs libboost-iostreams-dev too (../shared/ECOSYSTEM.md §9).
+# It needs libboost-iostreams-dev too (its find module looks for Boost.Iostreams).
 list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB)
 find_package(OpenVDB REQUIRED)

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // --apply-map MAP IMAGE: one neighbourhood synthesis drives every map of a material.
-#include "cli_state.h"
+#include "cli_error.h"
+#include "commands.h"
 #include "quiet_stderr.h"
 
+#include <OpenImageIO/filesystem.h>
+
 #include <texsyn/io.h>
+#include <texsyn/source_map.h>
 
 namespace texsyn::cli {
 
@@ -20,7 +24,9 @@ void run_apply_map(CliState& state, const std::string& map_file, const std::stri
     if (!ok)
         throw CliError(error);
     push_input(state, image_file);
-    StackImage img = state.pop(command);
+    if (state.stack.top(command).kind != ItemKind::Image)
+        throw CliError(command + " : " + image_file + " is an analysis, not an image");
+    StackItem img = std::move(state.stack.pop(command, 1)[0]);
     OIIO::ImageBuf remapped;
     if (!apply_source_map(remapped, map, img.file_pixels))
         throw CliError(command + " : " + remapped.geterror());
@@ -28,11 +34,14 @@ void run_apply_map(CliState& state, const std::string& map_file, const std::stri
     // and is written in that space unless --tocolorspace says otherwise (so a height or
     // normal map keeps its numbers).
     img.file_pixels = std::move(remapped);
-    img.from_file = false;
+    img.file_pixels.specmod().attribute("synth:sample", OIIO::Filesystem::filename(image_file));
+    img.name = "source map " + map_file + " applied to " + image_file;
+    img.file.clear();
+    img.no_recipe = "--apply-map has no recipe";
     if (img.output_colorspace.empty())
         img.output_colorspace = img.input_colorspace;
     const std::string space = img.input_colorspace;
-    state.stack.push_back(std::move(img));
+    state.stack.push(std::move(img));
     reinterpret_input(state, space);
 }
 

@@ -7,7 +7,7 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/strutil.h>
 
-#include "cli_state.h"
+#include "cli_error.h"
 
 namespace texsyn::cli {
 

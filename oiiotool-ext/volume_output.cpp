@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Writing solid textures: OpenVDB or a multi-part EXR of z slices, scene-linear float by
 // default (docs/solid.md).
-#include "cli_state.h"
+#include "cli_error.h"
+#include "commands.h"
 #include "output_format.h"
 #include "quiet_stderr.h"
 
@@ -14,32 +15,30 @@ namespace texsyn::cli {
 
 void write_volume_output(CliState& state, const std::string& filename)
 {
-    StackImage& img = state.top("-o");
+    const StackItem& img = state.stack.top("-o");
     const ColorConfig& cc = state.colors();
     const std::string space
         = cc.resolve(img.output_colorspace.empty() ? cc.scene_linear() : img.output_colorspace);
     if (space.empty())
         throw CliError("--tocolorspace : unknown colour space '" + img.output_colorspace + "'");
 
-    PlanarVolume& synthesized = *img.volume;
-    synthesized.attributes.attribute("synth:sample", sample_names(img));
+    PlanarVolume synthesized;
+    std::string error;
+    if (!volume_from_imagebuf(img.buf, synthesized, error))
+        throw CliError("-o " + filename + " : " + error);
     synthesized.attributes.attribute("synth:colorspace", space);
     synthesized.attributes.attribute("synth:commandline", state.command_line);
-    std::string error;
-    PlanarVolume converted; // only when the output is not scene-linear
     if (space != cc.scene_linear()) {
-        converted = synthesized;
         PlanarImage planes;
-        swap_voxel_planes(converted, planes);
+        swap_voxel_planes(synthesized, planes);
         const bool ok = cc.convert(planes, cc.scene_linear(), space, error, state.threads);
-        swap_voxel_planes(converted, planes);
+        swap_voxel_planes(synthesized, planes);
         if (!ok)
             throw CliError("-o " + filename + " : " + error);
     }
-    const PlanarVolume& v = space != cc.scene_linear() ? converted : synthesized;
+    const PlanarVolume& v = synthesized;
 
-    const std::string tmp = temporary_path_for(filename);
-    state.pending_outputs.emplace_back(tmp, filename);
+    const std::string tmp = state.outputs.add(filename);
     bool ok;
     {
         QuietStderr quiet;

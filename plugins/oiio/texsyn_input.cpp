@@ -4,7 +4,7 @@
 // dispatch only: the recipe is run by libtexsyn's run_recipe(), once per open().
 //
 // The plugin does not claim "procedural": stock oiiotool 2.4.7 crashes when a procedural
-// plugin accepts a name in valid_file() and then fails open() (../shared/ECOSYSTEM.md §2).
+// plugin accepts a name in valid_file() and then fails open().
 // Without it, a bad recipe fails cleanly with the plugin's message. Samples are read with
 // their own ImageInput (texsyn::read_image): re-entering OIIO's shared ImageCache while it
 // opens this file made oiiotool abort.
@@ -18,6 +18,8 @@
 #include <OpenImageIO/strutil.h>
 
 #include <texsyn/recipe.h>
+#include <texsyn/version.h>
+#include <texsyn/volume.h>
 
 OIIO_PLUGIN_NAMESPACE_BEGIN
 
@@ -27,15 +29,28 @@ public:
     int supports(string_view feature) const override { return feature == "arbitrary_metadata"; }
 
     // A name is ours if it ends in .texsyn (before any "?arguments") and names a recipe
-    // file, or a sample file with ".texsyn" appended.
+    // file, or a sample file with ".texsyn" appended, or arguments that name a method that
+    // needs no sample ("noise.texsyn?method=cascade").
     bool valid_file(const std::string& name) const override
     {
-        const std::string base = name.substr(0, name.find('?'));
+        const size_t q = name.find('?');
+        const std::string base = name.substr(0, q);
         if (!Strutil::iends_with(base, ".texsyn"))
             return false;
         std::error_code ec;
-        return std::filesystem::exists(base, ec)
-            || std::filesystem::exists(base.substr(0, base.size() - 7), ec);
+        if (std::filesystem::exists(base, ec)
+            || std::filesystem::exists(base.substr(0, base.size() - 7), ec))
+            return true;
+        if (q == std::string::npos)
+            return false;
+        for (const std::string& arg : Strutil::splits(name.substr(q + 1), "&"))
+            if (Strutil::starts_with(arg, "method=")) {
+                const texsyn::Method* m = texsyn::find_method(arg.substr(7));
+                return m
+                    && (m->inputs == texsyn::MethodInputs::None
+                        || m->inputs == texsyn::MethodInputs::OptionalImage);
+            }
+        return false;
     }
 
     bool open(const std::string& name, ImageSpec& newspec) override
@@ -92,8 +107,10 @@ private:
     // OIIO tools open a file more than once (oiiotool: for its spec, then for its pixels),
     // and a synthesis is expensive, so the last two results are kept, keyed by the name as
     // given, the working directory (for relative paths) and the modification times and
-    // sizes of the recipe file, the sample and the colour config (so edits are seen).
-    using Images = std::vector<ImageBuf>; // 0: the synthesis; then its subbands if asked for
+    // sizes of the recipe file, the samples, the files its options read and the colour
+    // config (so edits are seen).
+    // 0: the synthesis, then its subbands if asked for; a volume: one subimage per z slice.
+    using Images = std::vector<ImageBuf>;
 
     static std::shared_ptr<const Images> cached_synthesis(
         const std::string& name, const texsyn::Recipe& recipe, std::string& error)
@@ -106,11 +123,18 @@ private:
             return std::to_string(fs::last_write_time(path, ec).time_since_epoch().count()) + ":"
                 + std::to_string(fs::file_size(path, ec));
         };
-        const std::string key = name + "|" + fs::current_path(ec).string() + "|"
-            + stamp(name.substr(0, name.find('?'))) + "|" + stamp(recipe.sample) + "|"
-            + stamp(recipe.colorconfig);
-        // A recipe whose sample is a recipe depends on files this key does not see.
-        const bool cacheable = !Strutil::iends_with(recipe.sample, ".texsyn");
+        std::vector<std::string> inputs = recipe.samples;
+        for (const texsyn::OptionField& f : recipe.options.table().fields())
+            if (f.type == texsyn::OptionType::InputFile)
+                inputs.push_back(recipe.options.value(f.name));
+        std::string key = name + "|" + fs::current_path(ec).string() + "|"
+            + stamp(name.substr(0, name.find('?'))) + "|" + stamp(recipe.colorconfig);
+        // A recipe whose input is a recipe depends on files this key does not see.
+        bool cacheable = true;
+        for (const std::string& input : inputs) {
+            key += "|" + stamp(input);
+            cacheable = cacheable && !Strutil::iends_with(input, ".texsyn");
+        }
         static std::mutex mutex;
         static std::deque<std::pair<std::string, std::shared_ptr<const Images>>> cache;
         if (cacheable) {
@@ -123,7 +147,18 @@ private:
         std::vector<texsyn::NamedImage> bands;
         if (!texsyn::run_recipe(recipe, (*images)[0], &bands, error))
             return nullptr;
-        (*images)[0].specmod().attribute("oiio:subimagename", "synth");
+        if (const int depth = (*images)[0].spec().depth; depth > 1) {
+            // A volume: its z slices, named as in the slice EXR (volume.h).
+            const ImageBuf volume = std::move((*images)[0]);
+            images->clear();
+            for (int z = 0; z < depth; ++z) {
+                images->push_back(texsyn::volume_slice(volume, z));
+                images->back().specmod().attribute(
+                    "oiio:subimagename", texsyn::volume_exr_part_name(z, depth));
+            }
+        } else {
+            (*images)[0].specmod().attribute("oiio:subimagename", "synth");
+        }
         for (texsyn::NamedImage& band : bands) {
             ImageBuf buf;
             texsyn::imagebuf_from_planes(band.image, buf);

@@ -92,26 +92,29 @@ TEST_F(Cli, CascadeDilationOfOneEverywhereIsNoDilation)
 TEST_F(Cli, BadCascadeRequestsAreRefused)
 {
     expect_failure("--cascade:map=henon -o out.exr",
-        "texsyn ERROR: --cascade : map=henon is not one of logistic|sine|tent|cubic|curve");
-    expect_failure("--cascade:r=4.5 -o out.exr",
-        "texsyn ERROR: --cascade : r=4.5 : 4.5 is out of range (0..4)");
+        "texsyn ERROR: --cascade : map=henon : not one of logistic|sine|tent|cubic|curve");
+    expect_failure(
+        "--cascade:r=4.5 -o out.exr", "texsyn ERROR: --cascade : r=4.5 : out of range 0..4");
     expect_failure("--cascade:levels=2:iterations=1,2,3 -o out.exr",
-        "texsyn ERROR: --cascade : iterations=1,2,3 has 3 values for levels=2 (give 1..2)");
+        "texsyn ERROR: --cascade : iterations=1,2,3 : 3 values for levels=2 (give 1..2)");
     expect_failure("--cascade:kernel=custom:ksize=3:weights=1,2,1 -o out.exr",
-        "texsyn ERROR: --cascade : kernel=custom with ksize=3 needs 9 weights (got 3)");
+        "texsyn ERROR: --cascade : weights=1,2,1 : kernel=custom with ksize=3 needs 9 weights "
+        "(got 3)");
     expect_failure("--cascade:levels -o out.exr",
         "texsyn ERROR: --cascade : malformed option 'levels' (expected name=value)");
     expect_failure("--cascade:dilation=ctrl.exr -o out.exr",
         "texsyn ERROR: --cascade : dilation=ctrl.exr : no such file");
     expect_failure("--cascade:dilation=stucco.png:dilation=stucco.png -o out.exr",
-        "texsyn ERROR: --cascade : dilation is given twice");
+        "texsyn ERROR: --cascade : dilation=stucco.png : given twice");
     // The library's checks of the control image, passed through.
     expect_failure("--cascade:size=16x16:dilation=stucco.png -o out.exr",
-        "texsyn ERROR: --cascade : the dilation control image has 3 channels; expected 1");
+        "texsyn ERROR: --cascade : dilation=stucco.png : the control image has 3 channels; "
+        "expected 1");
     // A failure after an -o that succeeded leaves nothing behind either.
     expect_failure("stucco.png -o first.exr --cascade:transfer=channels:ramp=0,0,0,1,1,1 "
                    "-o second.exr",
-        "texsyn ERROR: --cascade : ramp= colours one lattice; with transfer=channels there are 3");
+        "texsyn ERROR: --cascade : ramp=0,0,0,1,1,1 : colours one lattice; with "
+        "transfer=channels there are 3");
     write_control(dir / "ctrl.exr", 0.0f);
     expect_failure("--cascade:dilation=ctrl.exr -o ctrl.exr",
         "texsyn ERROR: -o ctrl.exr : refusing to overwrite the input ctrl.exr",

@@ -185,7 +185,7 @@ protected:
         std::string error;
         EXPECT_TRUE(recipe_from_filename((dir / "r.texsyn").string(), recipe, error)) << error;
         EXPECT_EQ(recipe.method, method);
-        EXPECT_EQ(recipe.sample, (dir / "stucco.png").string());
+        EXPECT_EQ(recipe.samples, (std::vector<std::string> { (dir / "stucco.png").string() }));
         EXPECT_FALSE(recipe.subbands);
         OIIO::ImageBuf again, out = read("out.exr");
         EXPECT_TRUE(run_recipe(recipe, again, nullptr, error)) << error;

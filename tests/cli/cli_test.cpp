@@ -83,7 +83,7 @@ TEST_F(Cli, ColourSpaceOptionsBehaveAsInOiiotool)
                       "-d float -o cg.exr");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(read("cg.exr").spec().get_string_attribute("synth:colorspace"), "ACEScg");
-    // ACEScg of a linear Rec.709 pixel: the matrix in ECOSYSTEM.md §4.
+    // ACEScg of a linear Rec.709 pixel: the Bradford-adapted Rec.709 -> AP1 matrix.
     OIIO::ImageBuf lin = read("lin.exr"), cg = read("cg.exr");
     float a[3], b[3];
     lin.getpixel(10, 20, a);
@@ -242,22 +242,22 @@ TEST_F(Cli, MalformedCommandsAndOptionsAreRefused)
     expect_failure("stucco.png --frobnicate -o out.exr",
         "texsyn ERROR: unknown command or option '--frobnicate' (see texsyn --help)");
     expect_failure("stucco.png --pyramid:levels=3 -o out.exr",
-        "texsyn ERROR: --pyramid : unknown option 'levels' (known: size, iterations, "
+        "texsyn ERROR: --pyramid : levels=3 : unknown option (known: size, iterations, "
         "pyramid, scales, orientations, histogram, fft, gain, balance, flatten)");
     expect_failure("stucco.png --pyramid:size=abc -o out.exr",
-        "texsyn ERROR: --pyramid : size=abc is not a size (expected WxH, e.g. 1024x1024)");
+        "texsyn ERROR: --pyramid : size=abc : not a size (expected WxH, e.g. 1024x1024)");
     expect_failure("stucco.png --pyramid:size=0x10 -o out.exr",
-        "texsyn ERROR: --pyramid : size=0x10 is out of range (each side 1..1048576)");
+        "texsyn ERROR: --pyramid : size=0x10 : out of range 1..1048576 (each side)");
     expect_failure("stucco.png --pyramid:iterations=-1 -o out.exr",
-        "texsyn ERROR: --pyramid : iterations=-1 is out of range (0..100)");
+        "texsyn ERROR: --pyramid : iterations=-1 : out of range 0..100");
     expect_failure("stucco.png --pyramid:orientations=99 -o out.exr",
-        "texsyn ERROR: --pyramid : orientations=99 is out of range (1..8)");
+        "texsyn ERROR: --pyramid : orientations=99 : out of range 1..8");
     expect_failure("stucco.png --pyramid:iterations -o out.exr",
         "texsyn ERROR: --pyramid : malformed option 'iterations' (expected name=value)");
     expect_failure(
-        "--seed abc stucco.png --pyramid -o out.exr", "texsyn ERROR: --seed=abc is not an integer");
+        "--seed abc stucco.png --pyramid -o out.exr", "texsyn ERROR: --seed=abc : not an integer");
     expect_failure("--threads -2 stucco.png --pyramid -o out.exr",
-        "texsyn ERROR: --threads=-2 is out of range (0..1024)");
+        "texsyn ERROR: --threads=-2 : out of range 0..1024");
     expect_failure("-d int7 stucco.png --pyramid -o out.exr",
         "texsyn ERROR: -d : unknown data format 'int7' (use uint8, uint16, half or float)");
     expect_failure("stucco.png --pyramid -o", "texsyn ERROR: -o : missing argument");
@@ -370,10 +370,10 @@ TEST_F(Cli, AFailedRunLeavesNoOutputAtAll)
         "texsyn ERROR: --iscolorspace : has no effect, nothing is written after it (add -o FILE)");
     expect_failure("stucco.png --pyramid:size=32x32:iterations=1 -o a.png stucco.png "
                    "--pyramid:bogus=1 -o b.png",
-        "texsyn ERROR: --pyramid : unknown option 'bogus' (known: size, iterations, pyramid, "
-        "scales, orientations, histogram, fft, gain, balance, flatten)");
+        "texsyn ERROR: --pyramid : bogus=1 : unknown option (known: size, iterations, "
+        "pyramid, scales, orientations, histogram, fft, gain, balance, flatten)");
     expect_failure("stucco.png --pyramid:size=32x32:size=64x64 -o a.png",
-        "texsyn ERROR: --pyramid : size is given twice");
+        "texsyn ERROR: --pyramid : size=64x64 : given twice");
     fs::create_directory(dir / "taken.png");
     expect_failure("stucco.png --pyramid -o taken.png",
         "texsyn ERROR: -o taken.png : is a directory", { "stucco.png", "taken.png" });
@@ -401,12 +401,18 @@ TEST_F(Cli, RecipesAreWrittenForSynthesesOfFiles)
     texsyn::Recipe recipe;
     std::string error;
     ASSERT_TRUE(texsyn::recipe_from_filename((dir / "r.texsyn").string(), recipe, error)) << error;
-    EXPECT_EQ(recipe.sample, (dir / "stucco.png").string());
-    EXPECT_EQ(recipe.pyramid.seed, 3u);
-    EXPECT_EQ(recipe.pyramid.width, 40);
+    EXPECT_EQ(recipe.samples, (std::vector<std::string> { (dir / "stucco.png").string() }));
+    EXPECT_EQ(recipe.seed, 3u);
+    EXPECT_EQ(recipe.options.value("size"), "40x30");
     expect_failure("stucco.png --recipe r2.texsyn",
-        "texsyn ERROR: --recipe r2.texsyn : the current image is not a --pyramid, "
-        "--neighborhood or --choosy synthesis of a sample file (recipes describe only those)",
+        "texsyn ERROR: --recipe r2.texsyn : the current item, the stucco.png, has no recipe: it "
+        "was read from a file, not made by a method",
+        { "stucco.png", "r.texsyn" });
+    expect_failure("stucco.png --pyramid:size=32x32 --pyramid:size=16x16 --recipe r2.texsyn",
+        "texsyn ERROR: --recipe r2.texsyn : the current item, the pyramid synthesis of pyramid "
+        "synthesis of stucco.png, has no recipe: its input, the pyramid synthesis of "
+        "stucco.png, is not a file (recipes name their samples' files: write it first and "
+        "read that)",
         { "stucco.png", "r.texsyn" });
     expect_failure("stucco.png --pyramid --recipe r2.json",
         "texsyn ERROR: --recipe r2.json : name the recipe *.texsyn", { "stucco.png", "r.texsyn" });
@@ -436,15 +442,15 @@ TEST_F(Cli, AnAnalysisFileSynthesizesWhatTheSampleWould)
     EXPECT_EQ(r.status, 0) << r.err;
     r = texsyn("lap.tsa --pyramid:size=64x64 -o bad.exr");
     EXPECT_EQ(r.first_err_line(),
-        "texsyn ERROR: --pyramid : pyramid=steerable differs from the analysis "
+        "texsyn ERROR: --pyramid : pyramid=steerable : differs from the analysis "
         "(pyramid=laplacian)");
 }
 
 TEST_F(Cli, BadAnalysisCommandsAndFilesAreRefused)
 {
     expect_failure("stucco.png --analyze:iterations=3 -o a.tsa",
-        "texsyn ERROR: --analyze : iterations= is not an analysis option (known: pyramid, "
-        "scales, orientations, fft, flatten; give synthesis options to --pyramid)");
+        "texsyn ERROR: --analyze : iterations=3 : unknown option (known: pyramid, scales, "
+        "orientations, fft, flatten)");
     expect_failure("stucco.png --analyze -o a.exr",
         "texsyn ERROR: -o a.exr : the current item is an analysis; write it as *.tsa, or "
         "synthesize from it first (--pyramid)");
@@ -538,9 +544,10 @@ TEST_F(Cli, CheckWarnsAboutALightingGradientAndPyramidTakesFlatten)
     const std::initializer_list<std::string> files
         = { "stucco.png", "grad.exr", "flat.exr", "flat.tsa", "from_tsa.exr" };
     expect_failure("grad.exr --pyramid:flatten=2 -o out.exr",
-        "texsyn ERROR: --pyramid : flatten=2 is out of range (0..1)", files);
+        "texsyn ERROR: --pyramid : flatten=2 : out of range 0..1", files);
     expect_failure("flat.tsa --pyramid:flatten=1 -o out.exr",
-        "texsyn ERROR: --pyramid : flatten=1 needs a sample, and flat.tsa is an analysis (flatten "
+        "texsyn ERROR: --pyramid : flatten=1 : needs a sample, and flat.tsa is an analysis "
+        "(flatten "
         "when analysing: --analyze:flatten=1)",
         files);
 }
@@ -557,20 +564,20 @@ TEST_F(Cli, CheckLeavesTheStackAsItWas)
     // After an -o: the report is on the synthesis.
     r = texsyn("stucco.png" + synth + "c.exr --check");
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(r.out.find("the synthesis from stucco.png (48x48)\n"), 0u) << r.out;
+    EXPECT_EQ(r.out.find("pyramid synthesis of stucco.png (48x48)\n"), 0u) << r.out;
 }
 
 TEST_F(Cli, CheckNeedsAnImageAndTakesNoOptions)
 {
     expect_failure(
         "--check", "texsyn ERROR: --check : no current image (give an input file before it)");
-    expect_failure(
-        "stucco.png --check:tiles=8", "texsyn ERROR: --check : takes no options (got 'tiles=8')");
+    expect_failure("stucco.png --check:tiles=8",
+        "texsyn ERROR: --check : tiles=8 : unknown option (it takes none)");
     expect_failure("stucco.png --check stucco.png",
         "texsyn ERROR: stucco.png : has no effect, nothing is written after it (add -o FILE)");
     expect_failure("stucco.png --analyze --check",
-        "texsyn ERROR: --check : stucco.png is an analysis, not an image (check the sample it "
-        "was made from)");
+        "texsyn ERROR: --check : needs an image, not an analysis (the analysis of stucco.png; "
+        "only --pyramid, --mix and --transfer take analyses)");
 }
 
 TEST_F(Cli, SolidTexturesAreWrittenAsVdbAndAsSliceExr)
@@ -610,11 +617,11 @@ TEST_F(Cli, SolidTexturesAreWrittenAsVdbAndAsSliceExr)
 TEST_F(Cli, BadSolidRequestsAreRefused)
 {
     expect_failure("stucco.png --solid:size=64x64 -o out.vdb",
-        "texsyn ERROR: --solid : size=64x64 is not a size (expected WxHxD, e.g. 128x128x128)");
+        "texsyn ERROR: --solid : size=64x64 : not a size (expected WxHxD, e.g. 128x128x128)");
     expect_failure("stucco.png --solid:size=0x1x1 -o out.vdb",
-        "texsyn ERROR: --solid : size=0x1x1 is out of range (each side 1..16384)");
+        "texsyn ERROR: --solid : size=0x1x1 : out of range 1..16384 (each side)");
     expect_failure("stucco.png --solid:pyramid=steerable -o out.vdb",
-        "texsyn ERROR: --solid : pyramid=steerable is not one of combined|laplacian");
+        "texsyn ERROR: --solid : pyramid=steerable : not one of combined|laplacian");
     expect_failure("stucco.png --solid:size=64x64x8:scales=4 -o out.vdb",
         "texsyn ERROR: --solid : size=64x64x8 is too small for 4 scales (each side at least 16)");
     expect_failure("stucco.png --solid:size=32x32x32 -o out.png",
@@ -631,9 +638,9 @@ TEST_F(Cli, BadSolidRequestsAreRefused)
         "inspection EXR)");
     expect_failure("-d half stucco.png --solid:size=16x16x16 -o out.vdb",
         "texsyn ERROR: -d half : .vdb files hold float");
-    expect_failure("stucco.png --solid:size=16x16x16 -o out.vdb --recipe out.texsyn",
-        "texsyn ERROR: --recipe out.texsyn : recipes describe 2-D syntheses; the current "
-        "image is a solid texture");
+    expect_failure("stucco.png --analyze --recipe out.texsyn",
+        "texsyn ERROR: --recipe out.texsyn : the current item is an analysis; recipes describe "
+        "images");
 
     expect_failure_starting("stucco.png --solid:size=16384x16384x16384 -o out.vdb",
         "texsyn ERROR: --solid : size=16384x16384x16384 would need about ");
@@ -720,28 +727,29 @@ TEST_F(Cli, BadMixAndTransferInputIsRefused)
         "--mix : no mix mode given (choose one mode: palette=I:pattern=J, split=S or "
         "weights=W0,W1,...)");
     refused("rust.png stucco.png --mix:palette=0:pattern=2 -o out.exr",
-        "--mix : pattern=2 is out of range: the mix has 2 samples (0..1)");
+        "--mix : pattern=2 : out of range 0..1: the mix has 2 samples");
     refused("rust.png stucco.png --mix:pattern=1 -o out.exr",
-        "--mix : pattern=1 needs palette= (the sample giving the colour)");
+        "--mix : pattern=1 : needs palette= (the sample giving the colour)");
     refused("rust.png stucco.png --mix:palette=0:palette=1 -o out.exr",
-        "--mix : palette is given twice");
+        "--mix : palette=1 : given twice");
     refused("rust.png stucco.png --mix:weights=0,0 -o out.exr",
         "--mix : weights=0,0 : the weights must not all be 0");
     refused("rust.png stucco.png --mix:weights=1,-1 -o out.exr",
-        "--mix : weights=1,-1 : -1 is out of range (0..1000)");
-    refused("rust.png stucco.png --mix:split=17 -o out.exr",
-        "--mix : split=17 is out of range (1..16)");
+        "--mix : weights=1,-1 : -1 is out of range 0..1000");
+    refused(
+        "rust.png stucco.png --mix:split=17 -o out.exr", "--mix : split=17 : out of range 1..16");
     refused("rust.png stucco.png --mix:split=5 -o out.exr",
-        "--mix : split=5 is out of range: the pyramid has 4 scales (split=1..4)");
+        "--mix : split=5 : out of range 1..4: the pyramid has 4 scales");
     refused("rust.png stucco.png --mix:palette=0:pattern=1:split=2 -o out.exr",
-        "--mix : pattern=1 does not go with split=2 (choose one mode: palette=I:pattern=J, "
+        "--mix : pattern=1 : does not go with split=2 (choose one mode: palette=I:pattern=J, "
         "split=S or weights=W0,W1,...)");
     refused("stucco.png rust.png --transfer:size=64x64 -o out.exr",
-        "--transfer : size=64x64 does not apply: a transfer's output has the image's size");
+        "--transfer : size=64x64 : unknown option (known: iterations, pyramid, scales, "
+        "orientations, histogram, fft, gain, balance, flatten)");
     // Samples.
     refused("stucco.png rgba.exr --mix:weights=1,1 -o out.exr",
-        "--mix : sample 1 has 4 channels (R,G,B,A), sample 0 3 (R,G,B): the samples of a mix "
-        "need the same channels (sample 0 = stucco.png, sample 1 = rgba.exr)");
+        "--mix : sample 1 has 4 channels (R,G,B,A), sample 0 3 channels (R,G,B): the samples of "
+        "a mix need the same channels (sample 0 = stucco.png, sample 1 = rgba.exr)");
     refused("small.png stucco.png --mix:split=1 -o out.exr",
         "--mix : sample 0 is 12x12: the pyramid method needs at least 16x16 (sample 0 = "
         "small.png, sample 1 = stucco.png)");
@@ -751,13 +759,12 @@ TEST_F(Cli, BadMixAndTransferInputIsRefused)
     refused("stucco.png tiny.exr --transfer:scales=3 -o out.exr",
         "--transfer : scales=3 is too many for a 32x32 sample (at most 2) (image = stucco.png, "
         "sample = tiny.exr)");
-    refused("stucco.png --analyze rust.png --mix:split=1 -o out.exr",
-        "--mix : stucco.png is an analysis, not an image (only --pyramid synthesizes from an "
-        "analysis)");
-    refused("rust.png stucco.png --analyze --transfer -o out.exr",
-        "--transfer : stucco.png is an analysis, not an image (only --pyramid synthesizes from "
-        "an analysis)");
-    refused("rust.png stucco.png --mix:split=1 --recipe r.texsyn",
-        "--recipe r.texsyn : the current image is not a --pyramid, --neighborhood or --choosy "
-        "synthesis of a sample file (recipes describe only those)");
+    // Analyses: a transfer's image must be an image; the weights mode needs pixels.
+    refused("stucco.png --analyze rust.png --transfer -o out.exr",
+        "--transfer : needs an image, not an analysis (the analysis of stucco.png; only "
+        "--pyramid, --mix and --transfer take analyses)");
+    refused("stucco.png --analyze rust.png --mix:weights=1,1 -o out.exr",
+        "--mix : weights=1,1 : averages the samples' colours in one basis, which needs their "
+        "pixels, and sample 0 is an analysis (give the image) (sample 0 = analysis of "
+        "stucco.png, sample 1 = rust.png)");
 }

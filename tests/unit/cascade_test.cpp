@@ -278,7 +278,7 @@ TEST(Cascade, RefusesBadOptions)
     opt = options(64, 64);
     opt.r = { 3.9f, 3.8f };
     EXPECT_NE(error_of(opt).find("values for levels=1"), std::string::npos);
-    EXPECT_NE(error_of(options(0, 0)).find("size=0x0"), std::string::npos);
+    EXPECT_EQ(error_of(options(0, 64)), "size=0x64 : out of range 1..65536 (each side)");
     EXPECT_NE(error_of(options(65536, 65536)).find("memory"), std::string::npos);
 }
 
@@ -371,7 +371,7 @@ TEST(Cascade, EachLevelHasItsOwnOperator)
     ASSERT_TRUE(table.set(opt, "kernel", "gauss5,aniso7", error)) << error;
     ASSERT_TRUE(table.set(opt, "angle", "0,45", error)) << error;
     EXPECT_EQ(opt.map, (std::vector<CascadeMap> { CascadeMap::Logistic, CascadeMap::Sine }));
-    EXPECT_EQ(table.find("kernel")->format(opt), "gauss5,aniso7");
+    EXPECT_EQ(table.find("kernel")->format(&opt), "gauss5,aniso7");
     const OIIO::ImageBuf out = cascade_synthesize(opt);
     ASSERT_FALSE(out.has_error()) << out.geterror();
     EXPECT_NE(pixel_hash(out), same);

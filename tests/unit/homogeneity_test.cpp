@@ -3,8 +3,8 @@
 // end-to-end claim (a gradient sample is flagged, and flattening it improves synthesis).
 #include <texsyn/histogram.h>
 #include <texsyn/homogeneity.h>
+#include <texsyn/pyramid_synthesis.h>
 #include <texsyn/random.h>
-#include <texsyn/synthesis.h>
 
 #include <cmath>
 #include <cstring>

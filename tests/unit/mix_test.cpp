@@ -3,7 +3,8 @@
 // for the statistics it promises, on the bundled samples (scene-linear, 128x128 outputs).
 #include <texsyn/color.h>
 #include <texsyn/histogram.h>
-#include <texsyn/synthesis.h>
+#include <texsyn/mix.h>
+#include <texsyn/transfer.h>
 
 #include <cmath>
 
@@ -203,21 +204,21 @@ TEST(MixOptions, EachModeIsCheckedAlone)
         { "split=2:palette=1", "" },
         { "weights=0.5,0.3,0.2", "" },
         { "weights=1,0", "" },
-        { "pattern=1", "pattern=1 needs palette= (the sample giving the colour)" },
-        { "palette=0", "palette=0 alone is not a mix: add pattern= or split=" },
-        { "palette=0:pattern=2", "pattern=2 is out of range: the mix has 2 samples (0..1)" },
-        { "palette=3:split=1", "palette=3 is out of range: the mix has 2 samples (0..1)" },
-        { "palette=1:pattern=1", "palette=1 and pattern=1 name the same sample" },
+        { "pattern=1", "pattern=1 : needs palette= (the sample giving the colour)" },
+        { "palette=0", "palette=0 : alone is not a mix: add pattern= or split=" },
+        { "palette=0:pattern=2", "pattern=2 : out of range 0..1: the mix has 2 samples" },
+        { "palette=3:split=1", "palette=3 : out of range 0..1: the mix has 2 samples" },
+        { "palette=1:pattern=1", "pattern=1 : names the same sample as palette=" },
         { "palette=0:pattern=1:split=2",
-            "pattern=1 does not go with split=2 (choose one mode: palette=I:pattern=J, split=S "
+            "pattern=1 : does not go with split=2 (choose one mode: palette=I:pattern=J, split=S "
             "or weights=W0,W1,...)" },
         { "weights=0.5,0.5:palette=0",
-            "palette=0 does not go with weights=0.5,0.5 (choose one mode: palette=I:pattern=J, "
+            "palette=0 : does not go with weights=0.5,0.5 (choose one mode: palette=I:pattern=J, "
             "split=S or weights=W0,W1,...)" },
         { "weights=1", "weights=1 : a mix needs a weight for each of at least two samples" },
         { "weights=0,0", "weights=0,0 : the weights must not all be 0" },
-        { "split=5:scales=4", "split=5 is out of range: the pyramid has 4 scales (split=1..4)" },
-        { "split=1:orientations=9", "orientations=9 is out of range (1..8)" },
+        { "split=5:scales=4", "split=5 : out of range 1..4: the pyramid has 4 scales" },
+        { "split=1:orientations=9", "orientations=9 : out of range 1..8" },
     };
     for (const Case& c : cases) {
         MixOptions opt;
@@ -291,9 +292,9 @@ TEST(MixStatistics, BadSamplesAreRefusedNamingThem)
     std::string error;
     EXPECT_FALSE(mix_statistics({ &a }, opt, s, error));
     EXPECT_EQ(error, "the mix takes 2 samples (palette=, pattern= and split= mix two), got 1");
-    opt.palette = -1; // only the library can say this: the option table stops at 0
+    opt.palette = -1; // set in code: the table's range is checked all the same
     EXPECT_FALSE(mix_statistics({ &a, &b }, opt, s, error));
-    EXPECT_EQ(error, "palette=-1 is out of range: the mix has 2 samples (0..1)");
+    EXPECT_EQ(error, "palette=-1 : out of range 0..15");
     opt.palette = 0;
     opt.palette.reset();
     opt.pattern.reset();
@@ -307,8 +308,8 @@ TEST(MixStatistics, BadSamplesAreRefusedNamingThem)
     opt.weights = { 1, 1 };
     EXPECT_FALSE(mix_statistics({ &a, &rgba }, opt, s, error));
     EXPECT_EQ(error,
-        "sample 1 has 4 channels (R,G,B,A), sample 0 3 (R,G,B): the samples of a mix need the "
-        "same channels");
+        "sample 1 has 4 channels (R,G,B,A), sample 0 3 channels (R,G,B): the samples of a mix "
+        "need the same channels");
 
     OIIO::ImageBuf tiny(OIIO::ImageSpec(12, 12, 3, OIIO::TypeFloat));
     OIIO::ImageBufAlgo::zero(tiny);
@@ -324,7 +325,7 @@ TEST(MixStatistics, BadSamplesAreRefusedNamingThem)
     opt.weights.clear();
     opt.split = 3;
     EXPECT_FALSE(mix_statistics({ &a, &b }, opt, s, error));
-    EXPECT_EQ(error, "split=3 is out of range: the pyramid has 2 scales (split=1..2)");
+    EXPECT_EQ(error, "split=3 : out of range 1..2: the pyramid has 2 scales");
 }
 
 // Palette from rust, pattern from crinkled paper: the output's colour covariance and
@@ -505,7 +506,7 @@ TEST(Transfer, RefusesSizeAndOtherChannelCounts)
     OIIO::ImageBuf out = transfer_synthesize(rust, image, opt);
     ASSERT_TRUE(out.has_error());
     EXPECT_EQ(
-        out.geterror(), "size=64x64 does not apply: a transfer's output has the image's size");
+        out.geterror(), "size=64x64 : does not apply: a transfer's output has the image's size");
     OIIO::ImageBuf grey = OIIO::ImageBufAlgo::channels(image, 1, { 1 });
     out = transfer_synthesize(rust, grey, PyramidOptions());
     ASSERT_TRUE(out.has_error());

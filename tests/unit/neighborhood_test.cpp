@@ -102,7 +102,7 @@ TEST(Neighborhood, RefusesBadSizes)
         EXPECT_FALSE(neighborhood_synthesize(dst, sample, opt));
         return dst.geterror();
     };
-    EXPECT_NE(error_of(options(64, 64, 1, { 8 })).find("not an odd width"), std::string::npos);
+    EXPECT_NE(error_of(options(64, 64, 1, { 8 })).find("n=8 : not odd"), std::string::npos);
     EXPECT_NE(
         error_of(options(64, 64, 1, { 41 })).find("smaller than the n=41"), std::string::npos);
     EXPECT_NE(error_of(options(64, 64, 4, { 9 })).find("use levels=3 or less"), std::string::npos);

@@ -2,7 +2,8 @@
 // Solid textures (Heeger & Bergen 1995 §4): slices along every axis look like the sample.
 #include <texsyn/histogram.h>
 #include <texsyn/pyramid.h>
-#include <texsyn/synthesis.h>
+#include <texsyn/solid.h>
+#include <texsyn/volume.h>
 
 #include <algorithm>
 #include <cmath>
@@ -34,11 +35,23 @@ SolidOptions options(int w, int h, int d, int iterations = 5)
     return opt;
 }
 
+// solid_synthesize's 3-D image as planar volumes; false with the message otherwise.
+bool solid_volume(
+    PlanarVolume& v, const OIIO::ImageBuf& sample, const SolidOptions& opt, std::string& error)
+{
+    OIIO::ImageBuf out;
+    if (!solid_synthesize(out, sample, opt)) {
+        error = out.geterror();
+        return false;
+    }
+    return volume_from_imagebuf(out, v, error);
+}
+
 PlanarVolume solid(const OIIO::ImageBuf& sample, const SolidOptions& opt)
 {
     PlanarVolume v;
     std::string error;
-    EXPECT_TRUE(solid_synthesize(v, sample, opt, error)) << error;
+    EXPECT_TRUE(solid_volume(v, sample, opt, error)) << error;
     return v;
 }
 
@@ -241,23 +254,23 @@ TEST(SolidSynthesis, BadRequestsAreRefusedWithAMessage)
     std::string error;
     SolidOptions opt = options(64, 64, 8, 1);
     opt.scales = 4;
-    EXPECT_FALSE(solid_synthesize(v, sample, opt, error));
+    EXPECT_FALSE(solid_volume(v, sample, opt, error));
     EXPECT_EQ(error, "size=64x64x8 is too small for 4 scales (each side at least 16)");
     opt.scales = 5;
-    EXPECT_FALSE(solid_synthesize(v, sample, opt, error));
+    EXPECT_FALSE(solid_volume(v, sample, opt, error));
     EXPECT_EQ(error, "scales=5 is too many for a 128x128 sample (at most 4)");
     opt = options(16384, 16384, 16384);
-    EXPECT_FALSE(solid_synthesize(v, sample, opt, error));
+    EXPECT_FALSE(solid_volume(v, sample, opt, error));
     EXPECT_EQ(error.find("size=16384x16384x16384 would need about "), 0u) << error;
     opt = options(1, 64, 64);
-    EXPECT_FALSE(solid_synthesize(v, sample, opt, error));
+    EXPECT_FALSE(solid_volume(v, sample, opt, error));
     EXPECT_EQ(error, "size=1x64x64 is too small for 1 scales (each side at least 2)");
     opt = options(32, 32, 32);
     opt.orientations = 9;
-    EXPECT_FALSE(solid_synthesize(v, sample, opt, error));
-    EXPECT_EQ(error, "orientations=9 is out of range (1..8)");
+    EXPECT_FALSE(solid_volume(v, sample, opt, error));
+    EXPECT_EQ(error, "orientations=9 : out of range 1..8");
     OIIO::ImageBuf tiny(OIIO::ImageSpec(8, 8, 3, OIIO::TypeFloat));
-    EXPECT_FALSE(solid_synthesize(v, tiny, options(32, 32, 32), error));
+    EXPECT_FALSE(solid_volume(v, tiny, options(32, 32, 32), error));
     EXPECT_EQ(error, "sample is 8x8: the pyramid method needs at least 16x16");
     EXPECT_EQ(v.nchannels(), 0); // untouched on failure
 }
@@ -269,11 +282,11 @@ TEST(SolidOptions, TableParsesAndFormats)
     EXPECT_TRUE(SolidOptions::table().set(opt, "size", "256x256x64", error)) << error;
     EXPECT_EQ(opt.depth, 64);
     EXPECT_FALSE(SolidOptions::table().set(opt, "size", "64x64", error));
-    EXPECT_EQ(error, "size=64x64 is not a size (expected WxHxD, e.g. 128x128x128)");
+    EXPECT_EQ(error, "size=64x64 : not a size (expected WxHxD, e.g. 128x128x128)");
     EXPECT_FALSE(SolidOptions::table().set(opt, "size", "0x1x1", error));
-    EXPECT_EQ(error, "size=0x1x1 is out of range (each side 1..16384)");
+    EXPECT_EQ(error, "size=0x1x1 : out of range 1..16384 (each side)");
     EXPECT_FALSE(SolidOptions::table().set(opt, "pyramid", "steerable", error));
-    EXPECT_EQ(error, "pyramid=steerable is not one of combined|laplacian");
+    EXPECT_EQ(error, "pyramid=steerable : not one of combined|laplacian");
     EXPECT_EQ(SolidOptions::table().format(SolidOptions()),
         "size=0x0x0:iterations=5:pyramid=combined:scales=0:orientations=4:histogram=exact:"
         "fft=kiss");

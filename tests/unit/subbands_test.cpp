@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
+#include <texsyn/pyramid_synthesis.h>
 #include <texsyn/subbands.h>
 
 #include <filesystem>

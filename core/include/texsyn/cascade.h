@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Iterated nonlinear maps and convolution with a multiscale cascade
-// (../shared/papers/nonlinear-maps-convolution-cascade.txt): A(i+1) = p(N(A(i))) on a
+// ("iterated nonlinear maps and convolution" sketch): A(i+1) = p(N(A(i))) on a
 // lattice, N a small circular convolution, p a pointwise map of [0, 1], a few iterations.
 //
 // Same conventions as synthesis.h: ImageBufAlgo-style two forms, errors in dst, float in
@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,8 +52,9 @@ enum class CascadeTransfer {
 /// coarsest level first (level 0 is the coarsest); levels missing from a list repeat its
 /// last value.
 struct CascadeOptions {
-    int width = 512; ///< output size (the finest level)
-    int height = 512;
+    /// Output size (the finest level); 0x0 = the initial image's size, or 512x512 without one.
+    int width = 0;
+    int height = 0;
     int levels = 1; ///< cascade levels; level l is the output halved levels-1-l times
     std::vector<int> iterations = { 5 };                    ///< per level
     std::vector<CascadeMap> map = { CascadeMap::Logistic }; ///< per level
@@ -71,6 +73,9 @@ struct CascadeOptions {
     std::vector<float> ramp;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
+    /// Called with the fraction done (0..1) after each iteration, from the calling thread;
+    /// may be empty. Not an option: it never changes the result.
+    std::function<void(float)> progress;
 
     /// The table behind `--cascade:name=value`, synth:options and the docs.
     static const OptionTable<CascadeOptions>& table();

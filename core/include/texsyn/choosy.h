@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Castellanos & Williams choosy sampling on the pixel grid
-// (../shared/papers/castellanos-williams-isotropic-surfaces.txt §3.2–3.3, §3.11–3.13, §4, §6).
+// Castellanos & Williams choosy sampling on the pixel grid ("Automatic Synthesis of
+// Isotropic Textures on Surfaces from Sample Images", §3.2–3.3, §3.11–3.13, §4, §6).
 //
 // Same conventions as synthesis.h: ImageBufAlgo-style two forms, errors in dst, scene-linear
 // float in and out, bit-identical for a seed whatever nthreads is.
@@ -14,6 +14,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/options.h>
+#include <texsyn/source_map.h>
 
 namespace texsyn {
 

@@ -95,6 +95,11 @@ struct HomogeneityReport {
 /// tile measures (a warning says so); an empty image gives score 0, poor, and a warning.
 HomogeneityReport check_homogeneity(const PlanarImage& sample, int nthreads = 0);
 
+/// The report as the tool prints it (`texsyn SAMPLE --check`): a first line naming `name`
+/// and the size, one line per measure with its limit, then one "warning: …" line per
+/// warning; every line ends in a newline.
+std::string format_homogeneity_report(const HomogeneityReport& report, const std::string& name);
+
 /// Removes the low-order illumination that check_homogeneity fits: divides every colour
 /// channel by the fitted illumination, scaled so that the mean luminance is unchanged.
 /// The fit is clamped to at least 1/16 of its mean first, so a fit that extrapolates to

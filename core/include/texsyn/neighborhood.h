@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The neighbourhood method: Wei & Levoy 2000 "Fast Texture Synthesis using Tree-structured
-// Vector Quantization" (../shared/papers/wei-levoy-implementation-report.txt), with the
-// search back-ends of search.h and source-coordinate maps.
+// Vector Quantization" (and its implementation report), with the search back-ends of
+// search.h and source maps (source_map.h).
 //
 // Same conventions as synthesis.h: ImageBufAlgo-style two forms, errors in dst, scene-linear
 // float in and out, bit-identical for a seed whatever nthreads is.
@@ -16,6 +16,7 @@
 
 #include <texsyn/options.h>
 #include <texsyn/search.h>
+#include <texsyn/source_map.h>
 
 namespace texsyn {
 
@@ -103,14 +104,5 @@ bool neighborhood_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample,
     const NeighborhoodOptions& opt, OIIO::ImageBuf* source_map = nullptr);
 OIIO::ImageBuf neighborhood_synthesize(const OIIO::ImageBuf& sample, const NeighborhoodOptions& opt,
     OIIO::ImageBuf* source_map = nullptr);
-
-/// Re-applies a synthesis to an image aligned with its sample (height, normal, roughness…
-/// maps of the same material): dst(x, y) = image(map(x, y)) for every channel, values
-/// copied exactly. `map` is a source map as neighborhood_synthesize writes it; `image`
-/// must have the size recorded in its "synth:sample_size" (or, without it, contain every
-/// coordinate). Fails (false, message in dst) if the map does not have 2 channels or holds
-/// non-integer, non-finite or out-of-range coordinates, or if the sizes disagree.
-bool apply_source_map(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf& image);
-OIIO::ImageBuf apply_source_map(const OIIO::ImageBuf& map, const OIIO::ImageBuf& image);
 
 } // namespace texsyn

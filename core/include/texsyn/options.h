@@ -1,7 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// Option tables: each method's options are declared once (name, member, range, help) and
-// that one declaration drives CLI `:name=value` parsing, --help, recipes, the
-// synth:options metadata and the generated docs (STYLE.md "Options are declared once").
+// Option tables: each method's options are declared once — name, member, range, help — and
+// that one declaration drives `:name=value` parsing, the range checks of validate(),
+// --help, recipes and their JSON schema, the synth:options metadata and the generated docs.
+//
+// Rules for everything here:
+//  - An option's range is written once, in its table; OptionList::check() enforces it on
+//    options set in code, set() on options read from text. validate() adds only the rules
+//    that involve several options.
+//  - Every message has one shape: "<name>=<value> : <what is wrong>", the value as the user
+//    typed it (or, for a value set in code, in its shortest exact form), e.g.
+//    "penalty=17 : out of range 0..16", "n=9,8 : 8 is not odd".
+//  - A failed set() leaves the options unchanged.
 #pragma once
 
 #include <cstdint>
@@ -14,385 +23,331 @@
 
 namespace texsyn {
 
-/// Parses a decimal integer in [lo, hi]; false (with a message naming `name`, the value
-/// and the range) otherwise.
+/// The kind of value an option takes: how text and a recipe's JSON may write it
+/// (docs/recipes.md), and how front ends present it.
+enum class OptionType {
+    Integer,    ///< "3" or 3 (an optional integer also "none")
+    Real,       ///< "0.5" or 0.5
+    Size,       ///< "WxH" (or "WxHxD") or [w, h] (or [w, h, d])
+    Integers,   ///< "9,7,5", 9 or [9, 7, 5]
+    Numbers,    ///< "1,1.5", 1.5 or [1, 1.5]
+    Choice,     ///< one of `choices` ("a|b" in `allowed`)
+    Choices,    ///< a list of `choices`, "a,b"
+    InputFile,  ///< a file the method reads besides its inputs (see OptionField::file)
+    OutputFile, ///< a file the method writes besides its result (see OptionField::file)
+};
+
+/// How a file option's file is used.
+enum class FileUse {
+    None,      ///< not a file option
+    ReadImage, ///< an image read like an input: converted to scene-linear
+    ReadData,  ///< an image read as its numbers, with no colour conversion (control images)
+    Write,     ///< an image the method writes (e.g. a source map)
+};
+
+/// One option of an options struct: its description, and how to read, write and check
+/// it in a struct reached through a `void*` (OptionTable<T> keeps the types straight).
+struct OptionField {
+    std::string name;
+    std::string help;
+    std::string allowed; ///< human-readable range or choices, e.g. "0..16" or "exact|bins256"
+    OptionType type = OptionType::Integer;
+    double lo = 0.0, hi = 0.0;        ///< the range of each number (sizes: of each side)
+    bool odd = false;                 ///< integers must be odd
+    size_t max_count = 1;             ///< lists: at most this many values; sizes: 2 or 3 sides
+    std::vector<std::string> choices; ///< Choice, Choices
+    std::string none; ///< the text meaning "unset" or "empty" ("none"), or "" if none is
+    FileUse file = FileUse::None;
+    std::string extension; ///< OutputFile: the file name must end in it (".exr"), or ""
+
+    /// Parses `text` into the struct (syntax and range); false with a message.
+    std::function<bool(void*, std::string_view, std::string&)> parse;
+    /// The value in the struct as text (what parse() reads back to the same value).
+    std::function<std::string(const void*)> format;
+    /// Checks the value in the struct against the range; false with a message.
+    std::function<bool(const void*, std::string&)> check;
+};
+
+/// The options of one options struct, untyped: what front ends and docs iterate.
+class OptionList {
+public:
+    const std::vector<OptionField>& fields() const { return m_fields; }
+    /// The option called `name`, or null.
+    const OptionField* find(std::string_view name) const;
+    /// "a, b, c": the option names.
+    std::string names() const;
+
+    /// Sets option `name` of `opts` from `value`; false with a message for an unknown name
+    /// or a bad value, `opts` unchanged.
+    bool set(void* opts, std::string_view name, std::string_view value, std::string& error) const;
+    /// Applies "name=value:name=value" (each name at most once); false with a message,
+    /// `opts` then holds the options before the failing one.
+    bool apply(void* opts, std::string_view text, std::string& error) const;
+    /// "name=value:…" with every option but the file options, in table order
+    /// (synth:options).
+    std::string format(const void* opts) const;
+    /// Checks every option's value against its range; false with the first message.
+    bool check(const void* opts, std::string& error) const;
+
+protected:
+    std::vector<OptionField> m_fields;
+};
+
+namespace detail {
+
+/// How a field reaches its member from the struct's address.
+template <class V>
+using MemberAccess = std::function<V*(const void*)>;
+
+// Field makers (option_parsing.cpp): the description and the text <-> value logic, written
+// once for every table.
+OptionField integer_field(
+    std::string name, int lo, int hi, bool odd, std::string help, MemberAccess<int> member);
+OptionField optional_integer_field(
+    std::string name, int lo, int hi, std::string help, MemberAccess<std::optional<int>> member);
+OptionField real_field(
+    std::string name, float lo, float hi, std::string help, MemberAccess<float> member);
+OptionField size_field(std::string name, int hi, std::string zero_means, std::string help,
+    std::vector<MemberAccess<int>> sides);
+OptionField integers_field(std::string name, int lo, int hi, bool odd, size_t max_count,
+    std::string help, MemberAccess<std::vector<int>> member);
+OptionField numbers_field(std::string name, float lo, float hi, size_t max_count,
+    std::string empty_text, std::string help, MemberAccess<std::vector<float>> member);
+OptionField choice_field(std::string name, std::vector<std::string> names, std::string help,
+    std::function<size_t(const void*)> get, std::function<void(void*, size_t)> set);
+OptionField choices_field(std::string name, std::vector<std::string> names, size_t max_count,
+    std::string help, std::function<std::vector<size_t>(const void*)> get,
+    std::function<void(void*, std::vector<size_t>)> set);
+OptionField preset_field(std::string name, std::vector<std::pair<std::string, std::string>> presets,
+    std::string help, std::function<bool(void*, std::string_view, std::string&)> apply);
+OptionField file_field(std::string name, FileUse use, std::string extension, std::string help,
+    MemberAccess<std::string> member);
+/// `field` acting on the struct at `member(outer)` (options shared by two structs).
+OptionField nested_field(
+    const OptionField& field, std::function<void*(const void*)> member, std::string help);
+
+} // namespace detail
+
+/// The option table of an options struct T. Built once (a function-local static), then
+/// immutable; thread safe to read.
+template <class T>
+class OptionTable : public OptionList {
+public:
+    /// An int member in [lo, hi] (odd values only if `odd`).
+    OptionTable& integer(const char* name, int T::*m, int lo, int hi, const char* help)
+    {
+        return add(detail::integer_field(name, lo, hi, false, help, access(m)));
+    }
+    OptionTable& odd_integer(const char* name, int T::*m, int lo, int hi, const char* help)
+    {
+        return add(detail::integer_field(name, lo, hi, true, help, access(m)));
+    }
+    /// An optional int member in [lo, hi]; unset is written (and read) as "none".
+    OptionTable& optional_integer(
+        const char* name, std::optional<int> T::*m, int lo, int hi, const char* help)
+    {
+        return add(detail::optional_integer_field(name, lo, hi, help, access(m)));
+    }
+    /// A float member in [lo, hi].
+    OptionTable& real(const char* name, float T::*m, float lo, float hi, const char* help)
+    {
+        return add(detail::real_field(name, lo, hi, help, access(m)));
+    }
+    /// Two int members written "WxH", each in [1, hi]; "0x0" is accepted only when
+    /// `zero_means` is not empty (it is then described by it).
+    OptionTable& size(
+        const char* name, int T::*w, int T::*h, int hi, const char* zero_means, const char* help)
+    {
+        return add(detail::size_field(name, hi, zero_means, help, { access(w), access(h) }));
+    }
+    /// Three int members written "WxHxD", likewise.
+    OptionTable& size3(const char* name, int T::*w, int T::*h, int T::*d, int hi,
+        const char* zero_means, const char* help)
+    {
+        return add(
+            detail::size_field(name, hi, zero_means, help, { access(w), access(h), access(d) }));
+    }
+    /// A non-empty list of up to `max_count` integers in [lo, hi], written "a,b,c".
+    OptionTable& integers(const char* name, std::vector<int> T::*m, int lo, int hi,
+        size_t max_count, const char* help)
+    {
+        return add(detail::integers_field(name, lo, hi, false, max_count, help, access(m)));
+    }
+    OptionTable& odd_integers(const char* name, std::vector<int> T::*m, int lo, int hi,
+        size_t max_count, const char* help)
+    {
+        return add(detail::integers_field(name, lo, hi, true, max_count, help, access(m)));
+    }
+    /// A list of up to `max_count` numbers in [lo, hi], written "a,b,c"; an empty list is
+    /// written and read as `empty_text`.
+    OptionTable& numbers(const char* name, std::vector<float> T::*m, float lo, float hi,
+        size_t max_count, const char* empty_text, const char* help)
+    {
+        return add(detail::numbers_field(name, lo, hi, max_count, empty_text, help, access(m)));
+    }
+    /// An enum member chosen by name.
+    template <class E>
+    OptionTable& choice(
+        const char* name, E T::*m, std::vector<std::pair<std::string, E>> values, const char* help)
+    {
+        return add(detail::choice_field(
+            name, names_of(values), help,
+            [m, values](const void* t) {
+                for (size_t i = 0; i < values.size(); ++i)
+                    if (values[i].second == static_cast<const T*>(t)->*m)
+                        return i;
+                return size_t(0);
+            },
+            [m, values](void* t, size_t i) { static_cast<T*>(t)->*m = values[i].second; }));
+    }
+    /// A non-empty list of up to `max_count` enum values chosen by name, written "a,b,c".
+    template <class E>
+    OptionTable& choices(const char* name, std::vector<E> T::*m,
+        std::vector<std::pair<std::string, E>> values, size_t max_count, const char* help)
+    {
+        return add(detail::choices_field(
+            name, names_of(values), max_count, help,
+            [m, values](const void* t) {
+                std::vector<size_t> list;
+                for (const E& e : static_cast<const T*>(t)->*m)
+                    for (size_t i = 0; i < values.size(); ++i)
+                        if (values[i].second == e)
+                            list.push_back(i);
+                return list;
+            },
+            [m, values](void* t, std::vector<size_t> list) {
+                std::vector<E>& out = static_cast<T*>(t)->*m;
+                out.clear();
+                for (size_t i : list)
+                    out.push_back(values[i].second);
+            }));
+    }
+    /// A named set of other options' values: each preset is a "name=value:…" text applied
+    /// through T::table() where the option is read (later options override it). Written
+    /// "none": its effect is in the other options.
+    OptionTable& preset(const char* name, std::vector<std::pair<std::string, std::string>> presets,
+        const char* help)
+    {
+        return add(detail::preset_field(
+            name, std::move(presets), help, [](void* t, std::string_view text, std::string& error) {
+                return T::table().apply(t, text, error);
+            }));
+    }
+    /// A file the method reads (`use` ReadImage or ReadData) or writes (Write; its name
+    /// must end in `extension` if that is not empty); "" = none.
+    OptionTable& file(
+        const char* name, std::string T::*m, FileUse use, const char* extension, const char* help)
+    {
+        return add(detail::file_field(name, use, extension, help, access(m)));
+    }
+    /// Every field of `other`, acting on the member `member` (options one struct shares
+    /// with another, declared once). `help` replaces the help text of the named fields.
+    template <class U>
+    OptionTable& include(U T::*member, const OptionTable<U>& other,
+        const std::vector<std::pair<std::string, std::string>>& help = {})
+    {
+        for (const OptionField& f : other.fields()) {
+            std::string text = f.help;
+            for (const auto& h : help)
+                if (h.first == f.name)
+                    text = h.second;
+            add(detail::nested_field(
+                f,
+                [member](const void* t) -> void* {
+                    return &(const_cast<T*>(static_cast<const T*>(t))->*member);
+                },
+                text));
+        }
+        return *this;
+    }
+    /// The fields of `other` (a table of the same struct) named in `names`, in its order.
+    OptionTable& subset(const OptionTable& other, const std::vector<std::string>& names)
+    {
+        for (const OptionField& f : other.fields())
+            for (const std::string& n : names)
+                if (f.name == n)
+                    add(f);
+        return *this;
+    }
+
+    using OptionList::apply;
+    using OptionList::check;
+    using OptionList::format;
+    using OptionList::set;
+    bool set(T& opts, std::string_view name, std::string_view value, std::string& error) const
+    {
+        return OptionList::set(&opts, name, value, error);
+    }
+    bool apply(T& opts, std::string_view text, std::string& error) const
+    {
+        return OptionList::apply(&opts, text, error);
+    }
+    std::string format(const T& opts) const { return OptionList::format(&opts); }
+    bool check(const T& opts, std::string& error) const { return OptionList::check(&opts, error); }
+
+private:
+    OptionTable& add(OptionField f)
+    {
+        m_fields.push_back(std::move(f));
+        return *this;
+    }
+    template <class V>
+    static detail::MemberAccess<V> access(V T::*m)
+    {
+        return [m](const void* t) { return &(const_cast<T*>(static_cast<const T*>(t))->*m); };
+    }
+    template <class E>
+    static std::vector<std::string> names_of(const std::vector<std::pair<std::string, E>>& values)
+    {
+        std::vector<std::string> names;
+        for (const auto& v : values)
+            names.push_back(v.first);
+        return names;
+    }
+};
+
+/// The table of T that `declare` (a lambda adding T's fields) fills, built once on first
+/// use: what an options struct's static table() returns. Each lambda is its own table.
+template <class T, class Declare>
+const OptionTable<T>& declared_table(Declare declare)
+{
+    static const OptionTable<T> table = [&] {
+        OptionTable<T> t;
+        declare(t);
+        return t;
+    }();
+    return table;
+}
+
+/// The value of a per-level list option at `level`: levels the list does not reach repeat
+/// its last value; `fallback` for an empty list.
+template <class V>
+V at_level(const std::vector<V>& list, int level, V fallback)
+{
+    return list.empty() ? fallback
+                        : list[size_t(level < int(list.size()) ? level : int(list.size()) - 1)];
+}
+
+/// "<name>=<shown> : <reason>": the one shape of every option message.
+std::string option_error(std::string_view name, std::string_view shown, std::string_view reason);
+
+/// Parses a decimal integer in [lo, hi]; false with option_error(name, text, …) otherwise.
 bool parse_int_option(std::string_view name, std::string_view text, int64_t lo, int64_t hi,
     int64_t& value, std::string& error);
-/// Parses "WxH" with 1 <= W, H <= hi.
-bool parse_size_option(std::string_view name, std::string_view text, int hi, int& width,
-    int& height, std::string& error);
 
-/// Parses "WxHxD" with 1 <= W, H, D <= hi.
-bool parse_size3_option(std::string_view name, std::string_view text, int hi, int& width,
-    int& height, int& depth, std::string& error);
-
-/// Parses "a,b,c": 1..max_count decimal numbers, each in [lo, hi].
-bool parse_number_list_option(std::string_view name, std::string_view text, float lo, float hi,
-    size_t max_count, std::vector<float>& values, std::string& error);
 /// "a,b,c" with the shortest text that reads back as the same floats.
 std::string format_number_list(const std::vector<float>& values);
-
-/// Parses "a,b,c": 1..max_count decimal integers, each in [lo, hi].
-bool parse_int_list_option(std::string_view name, std::string_view text, int lo, int hi,
-    size_t max_count, std::vector<int>& values, std::string& error);
 /// "a,b,c".
 std::string format_int_list(const std::vector<int>& values);
-
-/// False with "size=WxH is out of range (each side 1..max_side)" unless width and height
-/// are both 0 (the default: the sample's size) or each in 1..max_side.
-bool check_size_range(int width, int height, int max_side, std::string& error);
-
-/// False with "<name>=<value> is out of range (lo..hi)" unless lo <= value <= hi.
-bool check_int_range(std::string_view name, int value, int lo, int hi, std::string& error);
-
-/// False with "<name>=a,b,c has 3 values for levels=2 (give 1..2)" unless `values` holds
-/// 1..levels values (a per-level list, finest first).
-bool check_level_list(
-    std::string_view name, const std::vector<int>& values, int levels, std::string& error);
 
 /// Splits "name=value:name=value" into pairs. False (message names the malformed piece)
 /// if a piece has no '=' or an empty name.
 bool split_option_string(std::string_view text,
     std::vector<std::pair<std::string, std::string>>& pairs, std::string& error);
 
-/// The kind of value an option takes: how a recipe's JSON may write it (docs/recipes.md).
-enum class OptionType {
-    Integer,  ///< "3" or 3 (an optional integer also "none")
-    Real,     ///< "0.5" or 0.5
-    Size,     ///< "WxH" (or "WxHxD") or [w, h] (or [w, h, d])
-    Integers, ///< "9,7,5", 9 or [9, 7, 5]
-    Numbers,  ///< "1,1.5", 1.5 or [1, 1.5]
-    Choice,   ///< one of the names in `allowed`
-};
-
-/// One option of an options struct T.
-template <class T>
-struct OptionField {
-    std::string name;
-    std::string help;
-    std::string allowed; ///< human-readable range or choices, e.g. "1..8" or "exact|bins256"
-    OptionType type;
-    std::function<bool(T&, std::string_view, std::string&)> parse;
-    std::function<std::string(const T&)> format;
-};
-
-/// The option table of an options struct T.
-template <class T>
-class OptionTable {
-public:
-    /// An int member in [lo, hi].
-    OptionTable& integer(const char* name, int T::*member, int lo, int hi, const char* help)
-    {
-        std::string nm = name;
-        m_fields.push_back(
-            { nm, help, std::to_string(lo) + ".." + std::to_string(hi), OptionType::Integer,
-                [=](T& t, std::string_view v, std::string& err) {
-                    int64_t x = 0;
-                    if (!parse_int_option(nm, v, lo, hi, x, err))
-                        return false;
-                    t.*member = int(x);
-                    return true;
-                },
-                [=](const T& t) { return std::to_string(t.*member); } });
-        return *this;
-    }
-    /// Two int members written as "WxH", each in [1, hi]; "0x0" is accepted only when
-    /// `zero_means` is not empty (it is then described by it).
-    OptionTable& size(
-        const char* name, int T::*w, int T::*h, int hi, const char* zero_means, const char* help)
-    {
-        std::string nm = name;
-        std::string zero = zero_means;
-        m_fields.push_back({ nm, help, "WxH, 1.." + std::to_string(hi), OptionType::Size,
-            [=](T& t, std::string_view v, std::string& err) {
-                if (!zero.empty() && v == "0x0") {
-                    t.*w = t.*h = 0;
-                    return true;
-                }
-                return parse_size_option(nm, v, hi, t.*w, t.*h, err);
-            },
-            [=](const T& t) { return std::to_string(t.*w) + "x" + std::to_string(t.*h); } });
-        return *this;
-    }
-    /// Three int members written as "WxHxD", each in [1, hi]; "0x0x0" is accepted only
-    /// when `zero_means` is not empty (it is then described by it).
-    OptionTable& size3(const char* name, int T::*w, int T::*h, int T::*d, int hi,
-        const char* zero_means, const char* help)
-    {
-        std::string nm = name;
-        std::string zero = zero_means;
-        m_fields.push_back({ nm, help, "WxHxD, 1.." + std::to_string(hi), OptionType::Size,
-            [=](T& t, std::string_view v, std::string& err) {
-                if (!zero.empty() && v == "0x0x0") {
-                    t.*w = t.*h = t.*d = 0;
-                    return true;
-                }
-                return parse_size3_option(nm, v, hi, t.*w, t.*h, t.*d, err);
-            },
-            [=](const T& t) {
-                return std::to_string(t.*w) + "x" + std::to_string(t.*h) + "x"
-                    + std::to_string(t.*d);
-            } });
-        return *this;
-    }
-    /// An optional int member in [lo, hi]; unset is written (and read) as "none".
-    OptionTable& optional_integer(
-        const char* name, std::optional<int> T::*member, int lo, int hi, const char* help)
-    {
-        std::string nm = name;
-        m_fields.push_back({ nm, help, std::to_string(lo) + ".." + std::to_string(hi) + "|none",
-            OptionType::Integer,
-            [=](T& t, std::string_view v, std::string& err) {
-                if (v == "none") {
-                    (t.*member).reset();
-                    return true;
-                }
-                int64_t x = 0;
-                if (!parse_int_option(nm, v, lo, hi, x, err))
-                    return false;
-                t.*member = int(x);
-                return true;
-            },
-            [=](const T& t) {
-                return (t.*member) ? std::to_string(*(t.*member)) : std::string("none");
-            } });
-        return *this;
-    }
-    /// A list of up to `max_count` numbers in [lo, hi], written "a,b,c"; an empty list
-    /// (the default) is written and read as `empty_text`, which must mean the same as an
-    /// empty list wherever it would also parse as numbers.
-    OptionTable& numbers(const char* name, std::vector<float> T::*member, float lo, float hi,
-        size_t max_count, const char* empty_text, const char* help)
-    {
-        std::string nm = name;
-        std::string empty = empty_text;
-        m_fields.push_back({ nm, help,
-            "up to " + std::to_string(max_count) + " numbers " + format_number_list({ lo }) + ".."
-                + format_number_list({ hi }) + ", comma-separated",
-            OptionType::Numbers,
-            [=](T& t, std::string_view v, std::string& err) {
-                if (v == empty) {
-                    (t.*member).clear();
-                    return true;
-                }
-                return parse_number_list_option(nm, v, lo, hi, max_count, t.*member, err);
-            },
-            [=](const T& t) {
-                return (t.*member).empty() ? empty : format_number_list(t.*member);
-            } });
-        return *this;
-    }
-    /// A float member in [lo, hi].
-    OptionTable& real(const char* name, float T::*member, float lo, float hi, const char* help)
-    {
-        std::string nm = name;
-        m_fields.push_back({ nm, help,
-            format_number_list({ lo }) + ".." + format_number_list({ hi }), OptionType::Real,
-            [=](T& t, std::string_view v, std::string& err) {
-                std::vector<float> x;
-                if (!parse_number_list_option(nm, v, lo, hi, 1, x, err))
-                    return false;
-                t.*member = x[0];
-                return true;
-            },
-            [=](const T& t) { return format_number_list({ t.*member }); } });
-        return *this;
-    }
-    /// A named set of other options' values: `presets` maps each name to a
-    /// "name=value:…" text applied through T::table() when the option is read (later
-    /// options override it). It is written "none": its effect is in the other options.
-    OptionTable& preset(const char* name, std::vector<std::pair<std::string, std::string>> presets,
-        const char* help)
-    {
-        std::string allowed;
-        for (const auto& p : presets)
-            allowed += (allowed.empty() ? "" : "|") + p.first;
-        std::string nm = name;
-        m_fields.push_back({ nm, help, allowed, OptionType::Choice,
-            [=](T& t, std::string_view v, std::string& err) {
-                if (v == "none")
-                    return true;
-                for (const auto& p : presets)
-                    if (p.first == v)
-                        return apply_option_text(t, p.second, err);
-                err = nm + "=" + std::string(v) + " is not one of " + allowed;
-                return false;
-            },
-            [](const T&) { return std::string("none"); } });
-        return *this;
-    }
-
-    /// A non-empty list of up to `max_count` integers in [lo, hi], written "a,b,c".
-    OptionTable& integers(const char* name, std::vector<int> T::*member, int lo, int hi,
-        size_t max_count, const char* help)
-    {
-        std::string nm = name;
-        m_fields.push_back({ nm, help,
-            "up to " + std::to_string(max_count) + " integers " + std::to_string(lo) + ".."
-                + std::to_string(hi) + ", comma-separated",
-            OptionType::Integers,
-            [=](T& t, std::string_view v, std::string& err) {
-                return parse_int_list_option(nm, v, lo, hi, max_count, t.*member, err);
-            },
-            [=](const T& t) { return format_int_list(t.*member); } });
-        return *this;
-    }
-    /// A non-empty list of up to `max_count` enum values chosen by name, written "a,b,c".
-    template <class E>
-    OptionTable& choices(const char* name, std::vector<E> T::*member,
-        std::vector<std::pair<std::string, E>> values, size_t max_count, const char* help)
-    {
-        std::string nm = name;
-        std::string allowed;
-        for (auto& v : values)
-            allowed += (allowed.empty() ? "" : "|") + v.first;
-        m_fields.push_back({ nm, help,
-            "up to " + std::to_string(max_count) + " of " + allowed + ", comma-separated",
-            OptionType::Choice,
-            [=](T& t, std::string_view v, std::string& err) {
-                std::vector<E> list;
-                while (true) {
-                    const size_t comma = v.find(',');
-                    const std::string_view item = v.substr(0, comma);
-                    bool found = false;
-                    for (auto& c : values)
-                        if (c.first == item) {
-                            list.push_back(c.second);
-                            found = true;
-                        }
-                    if (!found) {
-                        err = nm + "=" + std::string(item) + " is not one of " + allowed;
-                        return false;
-                    }
-                    if (comma == std::string_view::npos)
-                        break;
-                    v.remove_prefix(comma + 1);
-                }
-                if (list.size() > max_count) {
-                    err = nm + " has " + std::to_string(list.size()) + " values (at most "
-                        + std::to_string(max_count) + ")";
-                    return false;
-                }
-                t.*member = std::move(list);
-                return true;
-            },
-            [=](const T& t) {
-                std::string text;
-                for (const E& e : t.*member)
-                    for (auto& c : values)
-                        if (c.second == e)
-                            text += (text.empty() ? "" : ",") + c.first;
-                return text;
-            } });
-        return *this;
-    }
-    /// An enum member chosen by name.
-    template <class E>
-    OptionTable& choice(const char* name, E T::*member,
-        std::vector<std::pair<std::string, E>> values, const char* help)
-    {
-        std::string nm = name;
-        std::string allowed;
-        for (auto& v : values)
-            allowed += (allowed.empty() ? "" : "|") + v.first;
-        m_fields.push_back({ nm, help, allowed, OptionType::Choice,
-            [=](T& t, std::string_view v, std::string& err) {
-                for (auto& c : values)
-                    if (c.first == v) {
-                        t.*member = c.second;
-                        return true;
-                    }
-                err = nm + "=" + std::string(v) + " is not one of " + allowed;
-                return false;
-            },
-            [=](const T& t) {
-                for (auto& c : values)
-                    if (c.second == t.*member)
-                        return c.first;
-                return std::string("?");
-            } });
-        return *this;
-    }
-
-    /// Every field of `other`, acting on the member `member` (options one method shares
-    /// with another, declared once). `help` replaces the help text of the named fields.
-    template <class U>
-    OptionTable& include(U T::*member, const OptionTable<U>& other,
-        const std::vector<std::pair<std::string, std::string>>& help = {})
-    {
-        for (const OptionField<U>& f : other.fields()) {
-            std::string text = f.help;
-            for (auto& h : help)
-                if (h.first == f.name)
-                    text = h.second;
-            m_fields.push_back({ f.name, text, f.allowed, f.type,
-                [member, parse = f.parse](T& t, std::string_view v, std::string& err) {
-                    return parse(t.*member, v, err);
-                },
-                [member, format = f.format](const T& t) { return format(t.*member); } });
-        }
-        return *this;
-    }
-
-    const std::vector<OptionField<T>>& fields() const { return m_fields; }
-
-    /// The option called `name`, or null.
-    /// Applies "name=value:…" (`text`) to `opts` through T::table(); false with a message.
-    static bool apply_option_text(T& opts, std::string_view text, std::string& error)
-    {
-        std::vector<std::pair<std::string, std::string>> pairs;
-        if (!split_option_string(text, pairs, error))
-            return false;
-        for (const auto& [n, v] : pairs)
-            if (!T::table().set(opts, n, v, error))
-                return false;
-        return true;
-    }
-
-    const OptionField<T>* find(std::string_view name) const
-    {
-        for (auto& f : m_fields)
-            if (f.name == name)
-                return &f;
-        return nullptr;
-    }
-
-    /// Sets option `name` from `value`; false with a message for an unknown name or a
-    /// bad value. The struct is unchanged on failure.
-    bool set(T& opts, std::string_view name, std::string_view value, std::string& error) const
-    {
-        const OptionField<T>* f = find(name);
-        if (!f) {
-            error = "unknown option '" + std::string(name) + "' (known: " + names() + ")";
-            return false;
-        }
-        T copy = opts;
-        if (!f->parse(copy, value, error))
-            return false;
-        opts = std::move(copy);
-        return true;
-    }
-
-    /// "name=value:name=value…" with every option, in table order (synth:options).
-    std::string format(const T& opts) const
-    {
-        std::string s;
-        for (auto& f : m_fields)
-            s += (s.empty() ? "" : ":") + f.name + "=" + f.format(opts);
-        return s;
-    }
-
-    /// "a, b, c": the option names.
-    std::string names() const
-    {
-        std::string s;
-        for (auto& f : m_fields)
-            s += (s.empty() ? "" : ", ") + f.name;
-        return s;
-    }
-
-private:
-    std::vector<OptionField<T>> m_fields;
-};
+/// False with "<name>=a,b,c : 3 values for levels=2 (give 1..2)" unless `count` is
+/// 1..levels (a per-level list); `shown` is the list as text.
+bool check_level_list(
+    std::string_view name, std::string_view shown, size_t count, int levels, std::string& error);
 
 } // namespace texsyn

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Image pyramids for Heeger & Bergen 1995 §3.1: Laplacian (Burt & Adelson) and steerable
-// (Simoncelli & Freeman, Fourier-domain construction; ../shared/notes/pyramid-math.md).
+// (Simoncelli & Freeman, Fourier-domain construction).
 //
 // Rules for this header:
 //  - A pyramid is a plan for one image size: build(image) -> bands, collapse(bands) ->

@@ -8,9 +8,15 @@
 
 #include <OpenImageIO/imagebuf.h>
 
-#include <texsyn/synthesis.h>
+#include <texsyn/image.h>
 
 namespace texsyn {
+
+/// A named multi-channel image: one subband of one pyramid (for --subbands output).
+struct NamedImage {
+    std::string name;  ///< e.g. "sample.s2.o1", "synth.highpass", "synth.L3"
+    PlanarImage image; ///< channels pc0, pc1, … (decorrelated colour) plus A if alpha
+};
 
 /// Writes `synth` as part "synth" followed by one part per entry of `subbands` (part name
 /// = NamedImage::name, float channels as named there) to `filename`. All parts share the

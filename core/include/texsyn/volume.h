@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/paramlist.h>
 #include <OpenImageIO/typedesc.h>
 
@@ -99,6 +100,22 @@ struct PlanarVolume {
 /// second call, so pointwise image operations (colour conversion, decorrelation) apply to
 /// volumes without copying. Between the two calls `v`'s channels hold no voxels.
 void swap_voxel_planes(PlanarVolume& v, PlanarImage& img);
+
+/// `v` as a 3-D float ImageBuf: width x height x depth voxels (spec.depth), origin
+/// (0,0,0), the volume's channels and names, colour un-associated from alpha (flagged
+/// "oiio:UnassociatedAlpha", as the volume keeps it) and `v.attributes` as metadata.
+void imagebuf_from_volume(const PlanarVolume& v, OIIO::ImageBuf& dst);
+
+/// The inverse: a float volume from a 2-D or 3-D ImageBuf (any pixel type), colour
+/// un-associated from alpha (divided by it unless flagged "oiio:UnassociatedAlpha"),
+/// synth:* metadata into `v.attributes`. Fails (false, `error`) if `src` has an error, is
+/// empty, too large (height * depth >= 2^31) or has NaN/Inf voxels.
+bool volume_from_imagebuf(const OIIO::ImageBuf& src, PlanarVolume& dst, std::string& error);
+
+/// Z slice `z` of a 3-D ImageBuf as a 2-D float image of the same width, height,
+/// channels and metadata, colour associated with alpha (the slice EXR's parts; the OIIO
+/// plugin's subimages).
+OIIO::ImageBuf volume_slice(const OIIO::ImageBuf& volume, int z);
 
 /// Writes `v` as an OpenVDB file (atomically: temporary file, then rename) that stock
 /// tools read: one dense Vec3f grid "Cd" from the first three colour channels (a grey

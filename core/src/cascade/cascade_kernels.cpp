@@ -55,8 +55,7 @@ int preset_size(CascadeKernel k)
 
 CascadeKernelWeights cascade_kernel(const CascadeOptions& opt, int level)
 {
-    auto at = [level](const auto& v) { return v[size_t(std::min<int>(level, int(v.size()) - 1))]; };
-    const CascadeKernel kernel = at(opt.kernel);
+    const CascadeKernel kernel = at_level(opt.kernel, level, CascadeKernel::Gauss5);
     if (kernel == CascadeKernel::Custom)
         return normalised(opt.ksize, std::vector<double>(opt.weights.begin(), opt.weights.end()));
     const int n = preset_size(kernel);
@@ -79,7 +78,7 @@ CascadeKernelWeights cascade_kernel(const CascadeOptions& opt, int level)
     }
     case CascadeKernel::Aniso5:
     case CascadeKernel::Aniso7:
-        return normalised(n, gaussian(n, size / 3, size / 10, at(opt.angle)));
+        return normalised(n, gaussian(n, size / 3, size / 10, at_level(opt.angle, level, 0.0f)));
     default:
         return normalised(n, gaussian(n, size / 4, size / 4, 0));
     }

@@ -16,10 +16,9 @@ constexpr size_t kMaxRampStops = 64;
 
 const OptionTable<CascadeOptions>& CascadeOptions::table()
 {
-    using O = CascadeOptions;
-    using K = CascadeKernel;
-    static const OptionTable<O> t = [] {
-        OptionTable<O> t;
+    return declared_table<CascadeOptions>([](OptionTable<CascadeOptions>& t) {
+        using O = CascadeOptions;
+        using K = CascadeKernel;
         // Looks found by trying; each sets every option that matters to it, and options
         // after it override (docs/cascade.md shows them).
         t.preset("preset",
@@ -43,7 +42,9 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
                     "iterations=6:ramp=0.2,0.1,0.05,0.7,0.5,0.35" } },
             "a named look (cells, blotches, fibres, bands, caustics, stone) setting the "
             "options below; options after it override it");
-        t.size("size", &O::width, &O::height, kMaxSide, "", "output size WxH");
+        t.size("size", &O::width, &O::height, kMaxSide, "512x512, or the input image's size",
+            "output size WxH (default: 512x512 for a generator, the input image's size for a "
+            "transfer)");
         t.integer("levels", &O::levels, 1, kMaxLevels,
             "cascade levels, coarsest first; each doubles the size (1 = a single level)");
         t.integers("iterations", &O::iterations, 1, kMaxIterations, size_t(kMaxLevels),
@@ -72,7 +73,7 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
             "(Gaussian stretched along `angle`) of side 3, 5 or 7, or custom (`weights`)");
         t.numbers("angle", &O::angle, -360.0f, 360.0f, size_t(kMaxLevels), "none",
             "aniso kernels: direction in degrees, per level, coarsest first");
-        t.integer("ksize", &O::ksize, 1, 7, "kernel=custom: side of the kernel (odd)");
+        t.odd_integer("ksize", &O::ksize, 1, 7, "kernel=custom: side of the kernel");
         t.numbers("weights", &O::weights, -100.0f, 100.0f, 49, "none",
             "kernel=custom: ksize x ksize weights, row by row (normalised to sum 1)");
         t.numbers("noise", &O::noise, 0.0f, 1.0f, size_t(kMaxLevels), "none",
@@ -88,74 +89,55 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
         t.numbers("ramp", &O::ramp, 0.0f, 1000.0f, kMaxRampStops * 3, "none",
             "colour ramp: r,g,b triples (scene-linear), evenly spaced from value 0 to 1 "
             "(default: the grey lattice, one channel)");
-        return t;
-    }();
-    return t;
+    });
 }
 
 bool CascadeOptions::validate(std::string& error) const
 {
-    if (width == 0 || height == 0) {
-        error = "size=" + std::to_string(width) + "x" + std::to_string(height)
-            + " is out of range (each side 1.." + std::to_string(kMaxSide) + ")";
+    if (!table().check(*this, error))
         return false;
-    }
-    if (!check_size_range(width, height, kMaxSide, error)
-        || !check_int_range("levels", levels, 1, kMaxLevels, error)
-        || !check_level_list("iterations", iterations, levels, error))
-        return false;
-    auto per_level = [&](const char* name, const std::vector<float>& v) {
-        if (!v.empty() && int(v.size()) <= levels)
-            return true;
-        error = std::string(name) + "=" + format_number_list(v) + " has " + std::to_string(v.size())
-            + " values for levels=" + std::to_string(levels) + " (give 1.." + std::to_string(levels)
-            + ")";
-        return false;
-    };
-    if (!per_level("r", r) || !per_level("noise", noise) || !per_level("angle", angle))
-        return false;
-    if (map.empty() || kernel.empty() || int(map.size()) > levels || int(kernel.size()) > levels) {
-        error = "map= and kernel= take 1.." + std::to_string(levels)
-            + " values for levels=" + std::to_string(levels);
-        return false;
+    const auto& t = table();
+    for (const char* name : { "iterations", "map", "r", "kernel", "angle", "noise" }) {
+        const OptionField& f = *t.find(name);
+        const std::string shown = f.format(this);
+        const size_t count = size_t(std::count(shown.begin(), shown.end(), ',')) + 1;
+        if (!check_level_list(name, shown, shown == f.none ? 0 : count, levels, error))
+            return false;
     }
     if (std::find(map.begin(), map.end(), CascadeMap::Curve) != map.end()) {
         if (curve.size() < 4 || curve.size() % 2 != 0) {
-            error = "map=curve needs curve=x0,y0,x1,y1,... with at least 2 points (got "
-                + std::to_string(curve.size()) + " values)";
+            error = option_error("curve", format_number_list(curve),
+                "map=curve needs x0,y0,x1,y1,... with at least 2 points (got "
+                    + std::to_string(curve.size()) + " values)");
             return false;
         }
         for (size_t k = 2; k < curve.size(); k += 2)
             if (!(curve[k] > curve[k - 2])) {
-                error = "curve=" + format_number_list(curve) + ": x must increase";
+                error = option_error("curve", format_number_list(curve), "x must increase");
                 return false;
             }
     }
     if (std::find(kernel.begin(), kernel.end(), CascadeKernel::Custom) != kernel.end()) {
-        if (ksize % 2 == 0) {
-            error = "ksize=" + std::to_string(ksize) + " is not odd";
-            return false;
-        }
         if (weights.size() != size_t(ksize * ksize)) {
-            error = "kernel=custom with ksize=" + std::to_string(ksize) + " needs "
-                + std::to_string(ksize * ksize) + " weights (got " + std::to_string(weights.size())
-                + ")";
+            error = option_error("weights", format_number_list(weights),
+                "kernel=custom with ksize=" + std::to_string(ksize) + " needs "
+                    + std::to_string(ksize * ksize) + " weights (got "
+                    + std::to_string(weights.size()) + ")");
             return false;
         }
         double sum = 0;
         for (float w : weights)
             sum += w;
         if (std::abs(sum) < 1e-6) {
-            error = "weights=" + format_number_list(weights)
-                + " sum to 0 (they are normalised "
-                  "to sum 1)";
+            error = option_error(
+                "weights", format_number_list(weights), "sum to 0 (they are normalised to sum 1)");
             return false;
         }
     }
     if (!ramp.empty() && (ramp.size() % 3 != 0 || ramp.size() < 6)) {
-        error = "ramp=" + format_number_list(ramp)
-            + " needs r,g,b triples, at least two colours (got " + std::to_string(ramp.size())
-            + " values)";
+        error = option_error("ramp", format_number_list(ramp),
+            "needs r,g,b triples, at least two colours (got " + std::to_string(ramp.size())
+                + " values)");
         return false;
     }
     return true;

@@ -2,6 +2,7 @@
 // The pieces of the cascade (cascade.h): maps, kernels, the convolution.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <texsyn/cascade.h>
@@ -37,5 +38,11 @@ void convolve_circular(const Plane& in, const CascadeKernelWeights& k, Plane& ou
 /// a = 0 everywhere give exactly convolve_circular's result.
 void convolve_warped(const Plane& in, const CascadeKernelWeights& k, const Plane& dilation,
     const Plane& angle, Plane& out, int nthreads);
+
+/// The tool's shorthands, rewritten into options: `map=curve:x0,y0,…` (a piece without '='
+/// after map=…curve) becomes curve=x0,y0,…; `kernel=w0,w1,…` (numbers) becomes
+/// kernel=custom:weights=… with ksize the square root of their count unless given;
+/// `ramp=FILE` (a name with a letter extension, e.g. rust.png) becomes palette=FILE.
+std::string cascade_shorthands(const std::string& modifiers);
 
 } // namespace texsyn::detail

@@ -9,7 +9,7 @@
 #include <texsyn/pyramid.h>
 
 #include "cascade_pvt.h"
-#include "synthesis/synthesis_pvt.h"
+#include "methods/method_helpers_pvt.h"
 
 namespace texsyn {
 
@@ -27,12 +27,6 @@ std::vector<Size> level_sizes(const CascadeOptions& opt)
     for (size_t l = sizes.size() - 1; l-- > 0;)
         sizes[l] = { (sizes[l + 1].w + 1) / 2, (sizes[l + 1].h + 1) / 2 };
     return sizes;
-}
-
-template <class T>
-T at_level(const std::vector<T>& v, int level)
-{
-    return v[size_t(std::min<int>(level, int(v.size()) - 1))];
 }
 
 // `image` resampled to w x h (OIIO's default filter) as planes; false with a message.
@@ -116,13 +110,36 @@ bool control_at(const OIIO::ImageBuf& image, const char* what, Size s, float lo,
     return true;
 }
 
-bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::ImageBuf* initial,
+// The fraction of the work done when `level` has run `iterations` iterations on each of
+// `nlattices` lattices: iterations weighted by their level's area.
+float work_done(const CascadeOptions& opt, const std::vector<Size>& sizes, int level,
+    int iterations, size_t nlattices)
+{
+    double total = 0.0, done = 0.0;
+    for (int l = 0; l < opt.levels; ++l) {
+        const double work = double(at_level(opt.iterations, l, 1)) * double(nlattices)
+            * double(sizes[size_t(l)].w) * double(sizes[size_t(l)].h);
+        total += work;
+        if (l < level)
+            done += work;
+    }
+    done += double(iterations) * double(sizes[size_t(level)].w) * double(sizes[size_t(level)].h);
+    return float(done / total);
+}
+
+bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::ImageBuf* initial,
     const OIIO::ImageBuf* dilation, const OIIO::ImageBuf* rotation, const OIIO::ImageBuf* palette)
 {
     std::string error;
-    if (!opt.validate(error)) {
+    if (!given.validate(error)) {
         dst.errorfmt("{}", error);
         return false;
+    }
+    // 0x0: the initial image's size, or 512x512 for a generator.
+    CascadeOptions opt = given;
+    if (!opt.width) {
+        opt.width = initial ? initial->spec().width : 512;
+        opt.height = initial ? initial->spec().height : 512;
     }
     const std::vector<Size> sizes = level_sizes(opt);
     PlanarImage input;
@@ -133,7 +150,10 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::Imag
     const size_t nlattices
         = initial && opt.transfer == CascadeTransfer::Channels ? input.channels.size() : 1;
     if (!opt.ramp.empty() && nlattices != 1) {
-        dst.errorfmt("ramp= colours one lattice; with transfer=channels there are {}", nlattices);
+        dst.errorfmt("{}",
+            option_error("ramp", format_number_list(opt.ramp),
+                "colours one lattice; with transfer=channels there are "
+                    + std::to_string(nlattices)));
         return false;
     }
     for (auto [image, what] : { std::pair { dilation, "dilation" }, { rotation, "rotation" } })
@@ -167,7 +187,7 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::Imag
     for (int l = 0; l < opt.levels; ++l) {
         const Size s = sizes[size_t(l)];
         if (l > 0) {
-            const float n = at_level(opt.noise, l);
+            const float n = at_level(opt.noise, l, 0.0f);
             for (size_t c = 0; c < lattices.size(); ++c) {
                 lattices[c] = expand_plane(lattices[c], s.w, s.h, Boundary::Circular, opt.nthreads);
                 if (n > 0.0f) {
@@ -186,18 +206,25 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt, const OIIO::Imag
             dst.errorfmt("{}", error);
             return false;
         }
-        const float r = at_level(opt.r, l);
-        const CascadeMap map = at_level(opt.map, l);
+        const float r = at_level(opt.r, l, 0.0f);
+        const CascadeMap map = at_level(opt.map, l, CascadeMap::Logistic);
         const detail::CascadeKernelWeights kernel = detail::cascade_kernel(opt, l);
-        for (Plane& a : lattices)
-            for (int it = 0; it < at_level(opt.iterations, l); ++it) {
+        int lattices_done = 0; // at this level, for the progress
+        for (Plane& a : lattices) {
+            const int iterations = at_level(opt.iterations, l, 1);
+            for (int it = 0; it < iterations; ++it) {
                 if (dilation || rotation)
                     detail::convolve_warped(a, kernel, spread, angle, scratch, opt.nthreads);
                 else
                     detail::convolve_circular(a, kernel, scratch, opt.nthreads);
                 detail::apply_cascade_map(scratch, map, r, opt.curve, opt.nthreads);
                 std::swap(a, scratch);
+                if (opt.progress)
+                    opt.progress(work_done(
+                        opt, sizes, l, lattices_done * iterations + it + 1, lattices.size()));
             }
+            ++lattices_done;
+        }
     }
 
     PlanarImage result;

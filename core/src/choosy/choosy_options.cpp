@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "choosy_pvt.h"
+#include "methods/common_options_pvt.h"
 
 namespace texsyn {
 
@@ -13,24 +14,22 @@ namespace {
 constexpr int kMaxSide = 65536; // per side of the output; memory refuses far less anyway
 constexpr int kMaxLevels = 8;
 constexpr int kMaxIterations = 64;
-constexpr float kMaxPenalty = 16.0f;
 constexpr int kMaxDims = 4096;
 } // namespace
 
 const OptionTable<ChoosyOptions>& ChoosyOptions::table()
 {
-    using O = ChoosyOptions;
-    static const OptionTable<O> t = [] {
-        OptionTable<O> t;
-        t.size("size", &O::width, &O::height, kMaxSide, "the sample's size",
+    return declared_table<ChoosyOptions>([](OptionTable<ChoosyOptions>& t) {
+        using O = ChoosyOptions;
+        detail::add_output_size(t, kMaxSide,
             "output size WxH, each side a multiple of 2^(levels-1) (default: the sample's size, "
             "cropped to one)");
-        t.integer("levels", &O::levels, 1, kMaxLevels,
-            "Gaussian/Laplacian pyramid levels, synthesized coarse to fine");
+        detail::add_levels(
+            t, kMaxLevels, "Gaussian/Laplacian pyramid levels, synthesized coarse to fine");
         t.integers("iterations", &O::iterations, 1, kMaxIterations, kMaxLevels,
             "choosy passes per level, finest first (one value = every level; coarser levels "
             "missing from the list repeat the last: 1,8 is the paper's Fig. 10(c))");
-        t.real("penalty", &O::penalty, 0.0f, kMaxPenalty,
+        t.real("penalty", &O::penalty, 0.0f, 16.0f,
             "a sample neighbourhood used c times scores distance x 2^(penalty (c - c_min)): "
             "1 = choosy sampling, 0 = greedy best match (Wei & Levoy's selection)");
         t.integer("isotropic", &O::isotropic, 0, 1,
@@ -42,46 +41,20 @@ const OptionTable<ChoosyOptions>& ChoosyOptions::table()
             "components in a set of dynamic kd-trees, one per use count)");
         t.integer("dims", &O::dims, 1, kMaxDims,
             "kdtree: principal components kept (24 x channels or more = all: exact)");
-        t.real("eps", &O::eps, 0.0f, 100.0f,
-            "kdtree: approximation factor (a match's squared distance in PCA space may be "
-            "(1+eps) times the nearest's; 0 = exact)");
-        return t;
-    }();
-    return t;
+        detail::add_kdtree_eps(t);
+    });
 }
 
 bool ChoosyOptions::validate(std::string& error) const
 {
-    if (!check_size_range(width, height, kMaxSide, error)
-        || !check_int_range("levels", levels, 1, kMaxLevels, error)
-        || !check_level_list("iterations", iterations, levels, error))
-        return false;
-    for (int v : iterations)
-        if (v < 1 || v > kMaxIterations) {
-            error = "iterations=" + format_int_list(iterations) + ": " + std::to_string(v)
-                + " is out of range (1.." + std::to_string(kMaxIterations) + ")";
-            return false;
-        }
-    if (!(penalty >= 0.0f && penalty <= kMaxPenalty)) {
-        error = "penalty=" + std::to_string(penalty) + " is out of range (0.."
-            + std::to_string(int(kMaxPenalty)) + ")";
-        return false;
-    }
-    if (!check_int_range("isotropic", isotropic, 0, 1, error)
-        || !check_int_range("dims", dims, 1, kMaxDims, error))
-        return false;
-    if (!(eps >= 0.0f && eps <= 100.0f)) {
-        error = "eps=" + std::to_string(eps) + " is out of range (0..100)";
-        return false;
-    }
-    return true;
+    return table().check(*this, error)
+        && check_level_list(
+            "iterations", format_int_list(iterations), iterations.size(), levels, error);
 }
 
 int ChoosyOptions::iterations_at(int level) const
 {
-    if (iterations.empty())
-        return 1;
-    return iterations[size_t(std::min<int>(level, int(iterations.size()) - 1))];
+    return at_level(iterations, level, 1);
 }
 
 size_t choosy_memory_estimate(int sample_width, int sample_height, int nchannels, int out_width,

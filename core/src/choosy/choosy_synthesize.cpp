@@ -5,11 +5,10 @@
 #include <algorithm>
 
 #include <texsyn/random.h>
-#include <texsyn/synthesis.h>
 
 #include "choosy_pvt.h"
-#include "neighborhood/source_map_pvt.h"
-#include "synthesis/synthesis_pvt.h"
+#include "methods/method_helpers_pvt.h"
+#include "methods/source_map_pvt.h"
 
 namespace texsyn {
 

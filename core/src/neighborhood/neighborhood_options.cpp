@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "methods/common_options_pvt.h"
 #include "neighborhood_pvt.h"
 
 namespace texsyn {
@@ -16,18 +17,16 @@ constexpr int kMaxLevels = 8;
 
 const OptionTable<NeighborhoodOptions>& NeighborhoodOptions::table()
 {
-    using O = NeighborhoodOptions;
-    static const OptionTable<O> t = [] {
-        OptionTable<O> t;
-        t.size("size", &O::width, &O::height, kMaxSide, "the sample's size",
-            "output size WxH (default: the sample's size)");
-        t.integer("levels", &O::levels, 1, kMaxLevels,
+    return declared_table<NeighborhoodOptions>([](OptionTable<NeighborhoodOptions>& t) {
+        using O = NeighborhoodOptions;
+        detail::add_output_size(t, kMaxSide);
+        detail::add_levels(t, kMaxLevels,
             "Gaussian pyramid levels, synthesized coarse to fine (1 = single resolution)");
-        t.integers("n", &O::n, 3, kMaxN, kMaxLevels,
+        t.odd_integers("n", &O::n, 3, kMaxN, kMaxLevels,
             "neighbourhood width per level, odd, finest first (one value = every level; "
             "coarser levels missing from the list repeat the last)");
-        t.integer("coarse", &O::coarse, 1, kMaxN,
-            "side of the full square taken around the parent at the next coarser level (odd)");
+        t.odd_integer("coarse", &O::coarse, 1, kMaxN,
+            "side of the full square taken around the parent at the next coarser level");
         t.choice("search", &O::search,
             { { "exhaustive", SearchMethod::Exhaustive }, { "tsvq", SearchMethod::Tsvq },
                 { "kdtree", SearchMethod::KdTree }, { "coherent", SearchMethod::Coherent } },
@@ -38,9 +37,7 @@ const OptionTable<NeighborhoodOptions>& NeighborhoodOptions::table()
             "space re-ranked by full distance");
         t.integer("dims", &O::dims, 0, 4096,
             "kdtree: PCA components kept; 0 = enough for 95% of the variance");
-        t.real("eps", &O::eps, 0.0f, 100.0f,
-            "kdtree: approximation factor (a match's squared distance in PCA space may be "
-            "(1+eps) times the nearest's)");
+        detail::add_kdtree_eps(t);
         t.integer("coherence", &O::coherence, 1, 16,
             "coherent: k of k-coherence (each shifted neighbour's source and its k-1 most "
             "similar sample positions)");
@@ -52,42 +49,18 @@ const OptionTable<NeighborhoodOptions>& NeighborhoodOptions::table()
             { { "causal", NeighborhoodShape::Causal }, { "square", NeighborhoodShape::Square } },
             "debug: causal (the L of already synthesized pixels) or square (unsynthesized noise "
             "included, the report's Figure 3c)");
-        return t;
-    }();
-    return t;
+    });
 }
 
 bool NeighborhoodOptions::validate(std::string& error) const
 {
-    if (!check_size_range(width, height, kMaxSide, error)
-        || !check_int_range("levels", levels, 1, kMaxLevels, error)
-        || !check_level_list("n", n, levels, error))
-        return false;
-    for (int v : n)
-        if (v < 3 || v > kMaxN || v % 2 == 0) {
-            error = "n=" + format_int_list(n) + " : " + std::to_string(v)
-                + " is not an odd width in 3.." + std::to_string(kMaxN);
-            return false;
-        }
-    if (coarse < 1 || coarse > kMaxN || coarse % 2 == 0) {
-        error = "coarse=" + std::to_string(coarse) + " is not an odd width in 1.."
-            + std::to_string(kMaxN);
-        return false;
-    }
-    if (candidates < 1 || candidates > 64 || dims < 0 || !(eps >= 0.0f && eps <= 100.0f)
-        || coherence < 1 || coherence > 16 || (merge != 0 && merge != 1)
-        || (tile != 0 && tile != 1)) {
-        error = "candidates, dims, eps, coherence, merge or tile is out of range (see --help)";
-        return false;
-    }
-    return true;
+    return table().check(*this, error)
+        && check_level_list("n", format_int_list(n), n.size(), levels, error);
 }
 
 int NeighborhoodOptions::n_at(int level) const
 {
-    if (n.empty())
-        return 9;
-    return n[size_t(std::min<int>(level, int(n.size()) - 1))];
+    return at_level(n, level, 9);
 }
 
 size_t neighborhood_memory_estimate(int sample_width, int sample_height, int nchannels,

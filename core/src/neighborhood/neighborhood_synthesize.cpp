@@ -6,11 +6,10 @@
 
 #include <texsyn/pyramid.h>
 #include <texsyn/random.h>
-#include <texsyn/synthesis.h>
 
+#include "methods/method_helpers_pvt.h"
+#include "methods/source_map_pvt.h"
 #include "neighborhood_pvt.h"
-#include "source_map_pvt.h"
-#include "synthesis/synthesis_pvt.h"
 
 namespace texsyn {
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Recipe JSON and REST arguments: one setter per key serves both.
+// Recipe JSON and REST arguments: one setter per key serves both, and the method's option
+// table (methods.h) says what each option key takes.
 #include <texsyn/recipe.h>
 
 #include <algorithm>
@@ -8,14 +9,11 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <type_traits>
 
 #include <OpenImageIO/strutil.h>
 #include <nlohmann/json.hpp>
 
 #include <texsyn/stats.h>
-
-#include "recipe_pvt.h"
 
 namespace texsyn {
 
@@ -30,6 +28,19 @@ std::string resolve_path(const std::string& path, const std::string& base_dir)
     return (fs::path(base_dir) / path).lexically_normal().string();
 }
 
+// The recipe's own keys, those of no method.
+constexpr const char* recipe_keys
+    = "texsyn_recipe, sample, method, seed, iscolorspace, tocolorspace, colorconfig, subbands";
+
+bool is_recipe_key(const std::string& key)
+{
+    for (const char* k : { "texsyn_recipe", "sample", "method", "seed", "iscolorspace",
+             "tocolorspace", "colorconfig", "subbands" })
+        if (key == k)
+            return true;
+    return false;
+}
+
 bool parse_bool(const std::string& key, const std::string& value, bool& out, std::string& error)
 {
     if (value == "1" || value == "true") {
@@ -40,121 +51,129 @@ bool parse_bool(const std::string& key, const std::string& value, bool& out, std
         out = false;
         return true;
     }
-    error = key + "=" + value + " is not a boolean (use true, false, 1 or 0)";
+    error = option_error(key, value, "not a boolean (use true, false, 1 or 0)");
     return false;
 }
 
-// The recipe's own keys, those of no method.
-constexpr const char* recipe_keys
-    = "texsyn_recipe, sample, method, seed, iscolorspace, tocolorspace, colorconfig, subbands";
-
-// The type of the method option called `key`: `method`'s if it has one (iterations is a
-// list for choosy, an integer for pyramid), else the first method's that has it; or null.
-const OptionType* option_type(const std::string& key, const std::string& method)
+// Makes `name` the recipe's method, with its default options.
+bool set_method(Recipe& r, const std::string& name, std::string& error)
 {
-    const OptionType* type = nullptr;
-    for (bool own : { true, false })
-        detail::for_each_recipe_method([&](const char* name, auto member) {
-            if (auto* field = detail::table_of(member).find(key);
-                field && !type && (!own || method == name))
-                type = &field->type;
-        });
-    return type;
-}
-
-// Sets a method option: for the recipe's method, and for every other method with an option
-// of that name that takes the value (so that a later method=… keeps it).
-bool set_option(Recipe& r, const std::string& key, const std::string& value, std::string& error)
-{
-    bool has = false, ok = false;
-    std::string names;
-    detail::visit_recipe_options(r, [&](auto& opt) {
-        const auto& table = std::decay_t<decltype(opt)>::table();
-        names = table.names();
-        has = table.find(key) != nullptr;
-        ok = has && table.set(opt, key, value, error);
-    });
-    if (has && !ok)
+    const Method* m = find_method(name);
+    if (!m || !m->makes_recipes()) {
+        error = option_error("method", name, "not one of " + method_names());
         return false;
-    std::string owner;
-    detail::for_each_recipe_method([&](const char* name, auto member) {
-        const auto& table = detail::table_of(member);
-        if (r.method == name || !table.find(key))
-            return;
-        std::string ignored; // a value that only the recipe's method takes stays its own
-        if (has)
-            table.set(r.*member, key, value, ignored);
-        else if (owner.empty())
-            owner = name;
-    });
-    if (has)
-        return true;
-    if (!owner.empty())
-        error = "key '" + key + "' is an option of method " + owner
-            + ", not of this recipe's method " + r.method + " (give method=" + owner + ")";
-    else
-        error = "unknown key '" + key + "' (known: " + recipe_keys + ", " + names + ")";
-    return false;
+    }
+    if (r.method != name || !r.options) {
+        r.method = name;
+        r.options = m->defaults();
+    }
+    return true;
 }
 
-// Sets one key from its text form. `base_dir` resolves relative paths.
-bool set_key(Recipe& r, const std::string& key, const std::string& value,
+// The first method but the recipe's whose options include `key`, or "".
+std::string owner_of(const std::string& key, const std::string& method)
+{
+    for (const Method* m : methods())
+        if (m->makes_recipes() && m->name != method && m->defaults().table().find(key))
+            return m->name;
+    return "";
+}
+
+// Sets option `key` of the recipe's method from its text (an input file's path resolved
+// against `base_dir`) and records it as given.
+bool set_option(Recipe& r, const std::string& key, std::string value, const std::string& base_dir,
+    std::string& error)
+{
+    const OptionField* field = r.options.table().find(key);
+    if (!field) {
+        const std::string owner = owner_of(key, r.method);
+        if (!owner.empty())
+            error = "key '" + key + "' is an option of method " + owner
+                + ", not of this recipe's method " + r.method + " (give method=" + owner + ")";
+        else
+            error = "unknown key '" + key + "' (known: " + recipe_keys + ", "
+                + r.options.table().names() + ")";
+        return false;
+    }
+    if (field->type == OptionType::OutputFile) {
+        error = "key '" + key
+            + "' names a file the tool writes beside its output; a recipe "
+              "makes one image (give it to the texsyn tool)";
+        return false;
+    }
+    if (field->type == OptionType::InputFile)
+        value = resolve_path(value, base_dir);
+    if (!r.options.set(key, value, error))
+        return false;
+    r.given.erase(std::remove_if(r.given.begin(), r.given.end(),
+                      [&](const auto& g) { return g.first == key; }),
+        r.given.end());
+    r.given.emplace_back(key, value);
+    return true;
+}
+
+// Sets one key: the recipe's own, or an option. `values` holds one text, or several for
+// the list keys (sample, iscolorspace).
+bool set_key(Recipe& r, const std::string& key, const std::vector<std::string>& values,
     const std::string& base_dir, std::string& error)
 {
+    const std::string& value = values.front();
+    if (values.size() > 1 && key != "sample" && key != "iscolorspace") {
+        error = key + ": takes one value, not a list";
+        return false;
+    }
     if (key == "texsyn_recipe") {
         int64_t v = 0;
         if (!parse_int_option(key, value, 1, 1000000, v, error))
             return false;
         if (v > recipe_version) {
-            error = "texsyn_recipe=" + value + " is newer than this texsyn reads (version "
-                + std::to_string(recipe_version) + ")";
+            error = option_error(key, value,
+                "newer than this texsyn reads (version " + std::to_string(recipe_version) + ")");
             return false;
         }
         return true;
     }
     if (key == "sample") {
-        r.sample = resolve_path(value, base_dir);
+        r.samples.clear();
+        for (const std::string& v : values)
+            r.samples.push_back(resolve_path(v, base_dir));
+        return true;
+    }
+    if (key == "iscolorspace") {
+        r.iscolorspace = values;
         return true;
     }
     if (key == "colorconfig") {
         r.colorconfig = resolve_path(value, base_dir);
         return true;
     }
-    if (key == "iscolorspace" || key == "tocolorspace") {
-        (key == "iscolorspace" ? r.iscolorspace : r.tocolorspace) = value;
+    if (key == "tocolorspace") {
+        r.tocolorspace = value;
         return true;
     }
-    if (key == "method") {
-        bool known = false;
-        detail::for_each_recipe_method([&](const char* name, auto) { known |= value == name; });
-        if (!known) {
-            error = "method=" + value + " is not one of " + detail::recipe_method_names();
-            return false;
-        }
-        r.method = value;
-        return true;
-    }
+    if (key == "method")
+        return set_method(r, value, error);
     if (key == "seed") {
         int64_t v = 0;
         if (!parse_int_option(key, value, 0, 2147483647, v, error))
             return false;
-        detail::for_each_recipe_method(
-            [&](const char*, auto member) { (r.*member).seed = uint64_t(v); });
+        r.seed = uint64_t(v);
         return true;
     }
     if (key == "subbands")
         return parse_bool(key, value, r.subbands, error);
-    return set_option(r, key, value, error);
+    return set_option(r, key, value, base_dir, error);
 }
+
+using KeyValues = std::vector<std::pair<std::string, std::vector<std::string>>>;
 
 // Sets the keys of one JSON object or one REST string: `method` first, wherever it stands,
 // so that the options after it and before it are the same method's.
-bool set_keys(Recipe& r, const std::vector<std::pair<std::string, std::string>>& pairs,
-    const std::string& base_dir, std::string& error)
+bool set_keys(Recipe& r, const KeyValues& pairs, const std::string& base_dir, std::string& error)
 {
     for (bool method : { true, false })
-        for (auto& [key, value] : pairs)
-            if ((key == "method") == method && !set_key(r, key, value, base_dir, error))
+        for (const auto& [key, values] : pairs)
+            if ((key == "method") == method && !set_key(r, key, values, base_dir, error))
                 return false;
     return true;
 }
@@ -175,48 +194,61 @@ bool number_text(const nlohmann::json& v, bool fractional, std::string& out)
 
 // A JSON value in the text form set_key takes: strings as they are; integers in decimal;
 // booleans (subbands only) as 1/0; fractional numbers for real and number-list options;
-// arrays of numbers for sizes ([w, h] as "WxH") and lists ([9, 7] as "9,7").
-bool json_text(const std::string& key, const nlohmann::json& v, const std::string& method,
-    std::string& out, std::string& error)
+// arrays of numbers for sizes ([w, h] as "WxH") and lists ([9, 7] as "9,7"); arrays of
+// strings for sample and iscolorspace (one text each).
+bool json_values(const std::string& key, const nlohmann::json& v, const OptionField* field,
+    std::vector<std::string>& out, std::string& error)
 {
-    static const char* const string_keys[]
-        = { "sample", "method", "iscolorspace", "tocolorspace", "colorconfig" };
-    const bool is_string_key
-        = std::find(std::begin(string_keys), std::end(string_keys), key) != std::end(string_keys);
-    const OptionType* type = option_type(key, method);
-    const bool is_list = type && (*type == OptionType::Integers || *type == OptionType::Numbers);
-    const bool fractional = type && (*type == OptionType::Real || *type == OptionType::Numbers);
-    const bool takes_number = !is_string_key && !(type && *type == OptionType::Size)
-        && !(type && *type == OptionType::Choice);
+    out.assign(1, "");
+    const bool list_key = key == "sample" || key == "iscolorspace";
+    const bool string_key
+        = list_key || key == "method" || key == "tocolorspace" || key == "colorconfig";
+    const OptionType type = field ? field->type : OptionType::Integer;
+    const bool is_list = field && (type == OptionType::Integers || type == OptionType::Numbers);
+    const bool fractional = field && (type == OptionType::Real || type == OptionType::Numbers);
+    const bool takes_number = !string_key
+        && !(field
+            && (type == OptionType::Size || type == OptionType::Choice
+                || type == OptionType::Choices || type == OptionType::InputFile
+                || type == OptionType::OutputFile));
     if (v.is_string()) {
-        out = v.get<std::string>();
+        out[0] = v.get<std::string>();
         return true;
     }
     if (v.is_boolean() && key == "subbands") {
-        out = v.get<bool>() ? "1" : "0";
+        out[0] = v.get<bool>() ? "1" : "0";
         return true;
     }
-    if (takes_number && number_text(v, fractional, out))
+    if (takes_number && number_text(v, fractional, out[0]))
         return true;
-    if (v.is_array() && !v.empty() && (is_list || (type && *type == OptionType::Size))) {
+    if (v.is_array() && !v.empty() && list_key
+        && std::all_of(v.begin(), v.end(), [](const nlohmann::json& s) { return s.is_string(); })) {
         out.clear();
+        for (const nlohmann::json& s : v)
+            out.push_back(s.get<std::string>());
+        return true;
+    }
+    if (v.is_array() && !v.empty() && (is_list || type == OptionType::Size) && field) {
         bool numbers = true;
         for (const nlohmann::json& item : v) {
             std::string text;
             numbers = numbers && number_text(item, fractional, text);
-            out += (out.empty() ? "" : is_list ? "," : "x") + text;
+            out[0] += (out[0].empty() ? "" : is_list ? "," : "x") + text;
         }
         if (numbers)
             return true;
     }
-    const char* expected = is_string_key ? "a string"
-        : key == "subbands"              ? "a boolean, an integer or a string"
-        : !type                          ? "an integer or a string"
-        : *type == OptionType::Size      ? "a string \"WxH\" or [width, height]"
-        : *type == OptionType::Choice    ? "a string"
-        : is_list                        ? "a number, a string \"a,b,c\" or an array of numbers"
-        : fractional                     ? "a number or a string"
-                                         : "an integer or a string";
+    const char* expected = list_key ? "a string or an array of strings"
+        : string_key                ? "a string"
+        : key == "subbands"         ? "a boolean, an integer or a string"
+        : !field                    ? "an integer or a string"
+        : type == OptionType::Size  ? "a string \"WxH\" or [width, height]"
+        : type == OptionType::Choice || type == OptionType::Choices || type == OptionType::InputFile
+            || type == OptionType::OutputFile
+        ? "a string"
+        : is_list    ? "a number, a string \"a,b,c\" or an array of numbers"
+        : fractional ? "a number or a string"
+                     : "an integer or a string";
     error = key + ": expected " + expected + ", not " + v.dump();
     return false;
 }
@@ -237,33 +269,56 @@ std::string percent_decode(const std::string& text)
     return out;
 }
 
-} // namespace
-
-std::string detail::recipe_method_names()
+// How many samples the recipe's method takes, as text for messages ("1", "0 or 1", …).
+std::string sample_count_text(const Method& m, const MethodOptions& options)
 {
-    std::string names;
-    detail::for_each_recipe_method(
-        [&](const char* name, auto) { names += (names.empty() ? "" : "|") + std::string(name); });
-    return names;
+    if (m.inputs == MethodInputs::OptionalImage)
+        return "0 or 1";
+    return std::to_string(m.input_count(options, 0));
 }
+
+} // namespace
 
 bool Recipe::validate(std::string& error) const
 {
-    bool ok = true;
-    if (!detail::visit_recipe_options(*this, [&](const auto& opt) { ok = opt.validate(error); })) {
-        error = "method=" + method + " is not one of " + detail::recipe_method_names();
+    const Method* m = row();
+    if (!m || !m->makes_recipes()) {
+        error = option_error("method", method, "not one of " + method_names());
         return false;
     }
-    if (!ok || method == "pyramid")
-        return ok;
-    if (subbands) {
-        error = "subbands=1 : method " + method + " has no subbands (only method pyramid does)";
+    const MethodOptions options = this->options ? this->options : m->defaults();
+    if (!options.validate(error))
+        return false;
+    const int n = int(samples.size());
+    const bool count_ok
+        = m->inputs == MethodInputs::OptionalImage ? n <= 1 : n == m->input_count(options, n);
+    if (!count_ok) {
+        error = n == 0 ? "the recipe names no sample (\"sample\": \"file.png\"); method " + method
+                + " takes " + sample_count_text(*m, options)
+                       : "method " + method + " takes " + sample_count_text(*m, options) + " sample"
+                + (m->input_count(options, n) == 1 ? "" : "s") + ", the recipe names "
+                + std::to_string(n) + " (\"sample\": [\"a.png\", \"b.png\", ...])";
         return false;
     }
-    if (is_analysis_filename(sample)) {
-        error = "sample=" + sample
-            + " : an analysis file (.tsa) is for method pyramid only; method " + method
-            + " needs a sample image";
+    for (int i = 0; i < n; ++i)
+        if (is_analysis_filename(samples[size_t(i)]) && !m->accepts_analysis(i)) {
+            error = option_error("sample", samples[size_t(i)],
+                "an analysis file (.tsa) is for the pyramid methods' samples; method " + method
+                    + " needs an image here");
+            return false;
+        }
+    if (iscolorspace.size() > 1 && int(iscolorspace.size()) != n) {
+        error = "iscolorspace: give one colour space for all samples or one per sample ("
+            + std::to_string(n) + "), not " + std::to_string(iscolorspace.size());
+        return false;
+    }
+    if (subbands && !m->subbands) {
+        std::string with;
+        for (const Method* other : methods())
+            if (other->subbands)
+                with += (with.empty() ? "" : ", ") + other->name;
+        error = option_error(
+            "subbands", "1", "method " + method + " has no subbands (only " + with + " do)");
         return false;
     }
     return true;
@@ -285,21 +340,20 @@ bool parse_recipe(
         return false;
     }
     Recipe r;
-    const auto method = j.find("method"); // checked by set_keys
-    const std::string method_name
-        = method != j.end() && method->is_string() ? method->get<std::string>() : r.method;
-    std::vector<std::pair<std::string, std::string>> pairs;
+    const auto method = j.find("method");
+    if (!set_method(r,
+            method != j.end() && method->is_string() ? method->get<std::string>() : r.method,
+            error))
+        return false;
+    KeyValues pairs;
     for (auto& [key, value] : j.items()) {
-        pairs.emplace_back(key, "");
-        if (!json_text(key, value, method_name, pairs.back().second, error))
+        pairs.emplace_back(key, std::vector<std::string>());
+        const OptionField* field = is_recipe_key(key) ? nullptr : r.options.table().find(key);
+        if (!json_values(key, value, field, pairs.back().second, error))
             return false;
     }
     if (!set_keys(r, pairs, base_dir, error))
         return false;
-    if (r.sample.empty()) {
-        error = "the recipe names no sample (\"sample\": \"file.png\")";
-        return false;
-    }
     recipe = std::move(r);
     return true;
 }
@@ -307,7 +361,7 @@ bool parse_recipe(
 bool apply_recipe_arguments(
     const std::string& arguments, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
-    std::vector<std::pair<std::string, std::string>> pairs;
+    KeyValues pairs;
     for (const std::string& piece : OIIO::Strutil::splits(arguments, "&")) {
         size_t eq = piece.find('=');
         if (eq == std::string::npos || eq == 0) {
@@ -317,12 +371,36 @@ bool apply_recipe_arguments(
         const std::string key = piece.substr(0, eq);
         for (auto& seen : pairs)
             if (seen.first == key) {
-                error = key + " is given twice";
+                error = option_error(key, piece.substr(eq + 1), "given twice");
                 return false;
             }
-        pairs.emplace_back(key, percent_decode(piece.substr(eq + 1)));
+        std::vector<std::string> values;
+        for (const std::string& v : (key == "sample" || key == "iscolorspace")
+                ? OIIO::Strutil::splits(piece.substr(eq + 1), ",")
+                : std::vector<std::string> { piece.substr(eq + 1) })
+            values.push_back(percent_decode(v));
+        if (values.empty())
+            values.emplace_back();
+        pairs.emplace_back(key, std::move(values));
     }
     Recipe r = recipe;
+    if (!r.options && !set_method(r, r.method, error))
+        return false;
+    for (const auto& [key, values] : pairs) {
+        if (key != "method" || values.front() == r.method)
+            continue;
+        // Another method: its defaults, and the options given so far that it has and takes.
+        if (!set_method(r, values.front(), error))
+            return false;
+        std::vector<std::pair<std::string, std::string>> given;
+        given.swap(r.given);
+        for (const auto& [k, v] : given) {
+            std::string ignored;
+            if (const OptionField* f = r.options.table().find(k);
+                f && f->type != OptionType::OutputFile && r.options.set(k, v, ignored))
+                r.given.emplace_back(k, v);
+        }
+    }
     if (!set_keys(r, pairs, base_dir, error))
         return false;
     recipe = std::move(r);
@@ -344,7 +422,10 @@ bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& 
         error = base + ": is a directory, not a recipe";
         return false;
     }
-    if (fs::is_regular_file(base, ec)) {
+    // "rust.png.texsyn": the sample is "rust.png" unless the method takes none.
+    const bool named_sample = !fs::is_regular_file(base, ec);
+    const std::string sample = base.substr(0, base.size() - 7);
+    if (!named_sample) {
         base_dir = fs::path(base).parent_path().string();
         std::ifstream in(base, std::ios::binary);
         std::stringstream text;
@@ -354,20 +435,25 @@ bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& 
             return false;
         }
     } else {
-        r.sample = base.substr(0, base.size() - 7); // "rust.png.texsyn" -> "rust.png"
+        r.samples = { sample };
     }
     if (q != std::string::npos && !apply_recipe_arguments(name.substr(q + 1), base_dir, r, error)) {
         error = base + ": " + error;
         return false;
     }
+    if (const Method* m = r.row(); named_sample && m && r.samples == std::vector { sample }
+        && (m->inputs == MethodInputs::None
+            || (m->inputs == MethodInputs::OptionalImage && !fs::exists(sample, ec))))
+        r.samples.clear();
     if (!r.validate(error)) {
         error = base + ": " + error;
         return false;
     }
-    if (fs::equivalent(r.sample, base, ec)) {
-        error = base + ": the recipe uses itself as its sample";
-        return false;
-    }
+    for (const std::string& s : r.samples)
+        if (fs::equivalent(s, base, ec)) {
+            error = base + ": the recipe uses itself as its sample";
+            return false;
+        }
     recipe = std::move(r);
     return true;
 }
@@ -383,26 +469,36 @@ std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir)
         const fs::path rel = abs.lexically_relative(fs::absolute(base_dir, ec).lexically_normal());
         return ec || rel.empty() ? abs.string() : rel.string();
     };
+    auto one_or_array = [](const std::vector<std::string>& v) {
+        return v.size() == 1 ? nlohmann::ordered_json(v[0]) : nlohmann::ordered_json(v);
+    };
     nlohmann::ordered_json j;
     j["texsyn_recipe"] = recipe_version;
-    j["sample"] = relative(recipe.sample);
+    if (!recipe.samples.empty()) {
+        std::vector<std::string> samples;
+        for (const std::string& s : recipe.samples)
+            samples.push_back(relative(s));
+        j["sample"] = one_or_array(samples);
+    }
     j["method"] = recipe.method;
-    detail::visit_recipe_options(recipe, [&](const auto& opt) {
-        j["seed"] = int64_t(opt.seed);
-        std::vector<std::pair<std::string, std::string>> pairs;
-        std::string ignored;
-        split_option_string(std::decay_t<decltype(opt)>::table().format(opt), pairs, ignored);
-        for (auto& [key, value] : pairs) {
-            const bool integer
-                = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
-            if (integer)
-                j[key] = std::stoll(value);
-            else
-                j[key] = value;
-        }
-    });
+    j["seed"] = int64_t(recipe.seed);
+    const Method* m = recipe.row();
+    const MethodOptions options = recipe.options || !m ? recipe.options : m->defaults();
+    for (const OptionField& f : options.table().fields()) {
+        const std::string value = options.value(f.name);
+        if (f.type == OptionType::OutputFile || (f.type == OptionType::InputFile && value.empty()))
+            continue;
+        const bool integer
+            = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+        if (f.type == OptionType::InputFile)
+            j[f.name] = relative(value);
+        else if (integer)
+            j[f.name] = std::stoll(value);
+        else
+            j[f.name] = value;
+    }
     if (!recipe.iscolorspace.empty())
-        j["iscolorspace"] = recipe.iscolorspace;
+        j["iscolorspace"] = one_or_array(recipe.iscolorspace);
     if (!recipe.tocolorspace.empty())
         j["tocolorspace"] = recipe.tocolorspace;
     if (!recipe.colorconfig.empty())

@@ -2,13 +2,11 @@
 // Runs a recipe exactly as the `texsyn` tool runs the same command line.
 #include <texsyn/recipe.h>
 
-#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/strutil.h>
 
 #include <texsyn/color.h>
-#include <texsyn/io.h>
-
-#include "recipe_pvt.h"
+#include <texsyn/inputs.h>
+#include <texsyn/volume.h>
 
 namespace texsyn {
 
@@ -27,40 +25,23 @@ struct DepthGuard {
     DepthGuard& operator=(const DepthGuard&) = delete;
 };
 
-// The synthesis of the recipe's sample (an image, or an analysis file), scene-linear.
-bool synthesize_sample(const Recipe& recipe, const ColorConfig& colors, int nthreads,
-    OIIO::ImageBuf& synth, std::vector<NamedImage>* subbands, std::string& error)
+// `image` (scene-linear) in colour space `to`: associated with alpha for an image, a
+// volume kept un-associated as its files keep it.
+bool convert_result(const ColorConfig& colors, const OIIO::ImageBuf& image, const std::string& to,
+    bool volume, OIIO::ImageBuf& dst, std::string& error)
 {
-    if (!recipe.subbands)
-        subbands = nullptr;
-    if (is_analysis_filename(recipe.sample)) { // method pyramid (Recipe::validate)
-        TextureStatistics stats;
-        if (!read_statistics(recipe.sample, stats, error))
-            return false;
-        if (synthesize_from_statistics(synth, stats, recipe.pyramid, nullptr, subbands))
-            return true;
-        error = synth.geterror();
+    if (!volume)
+        return colors.convert_image(image, colors.scene_linear(), to, true, dst, error);
+    PlanarVolume v;
+    if (!volume_from_imagebuf(image, v, error))
         return false;
-    }
-    OIIO::ImageBuf file;
-    OIIO::ImageSpec native;
-    if (!read_image(recipe.sample, file, error, &native))
-        return false;
-    const std::string from = recipe.iscolorspace.empty() ? colors.guess_colorspace(native)
-                                                         : colors.resolve(recipe.iscolorspace);
-    OIIO::ImageBuf sample;
-    if (!colors.convert_image(file, from, colors.scene_linear(), false, sample, error, nthreads)) {
-        error = recipe.sample + ": " + error;
-        return false;
-    }
-    const bool ok = recipe.method == "neighborhood"
-        ? neighborhood_synthesize(synth, sample, recipe.neighborhood)
-        : recipe.method == "choosy" ? choosy_synthesize(synth, sample, recipe.choosy)
-                                    : pyramid_synthesize(synth, sample, recipe.pyramid, subbands);
+    PlanarImage planes;
+    swap_voxel_planes(v, planes);
+    const bool ok = colors.convert(planes, colors.scene_linear(), to, error);
+    swap_voxel_planes(v, planes);
     if (ok)
-        return true;
-    error = synth.geterror();
-    return false;
+        imagebuf_from_volume(v, dst);
+    return ok;
 }
 
 } // namespace
@@ -70,34 +51,61 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
 {
     DepthGuard depth;
     if (recipe_depth > max_recipe_depth) {
-        error = recipe.sample + ": recipes nest more than " + std::to_string(max_recipe_depth)
+        error = (recipe.samples.empty() ? std::string("recipe") : recipe.samples[0])
+            + ": recipes nest more than " + std::to_string(max_recipe_depth)
             + " deep (does a recipe use itself as its sample?)";
         return false;
     }
     if (!recipe.validate(error))
         return false;
-    int nthreads = 0;
-    detail::visit_recipe_options(recipe, [&](const auto& opt) { nthreads = opt.nthreads; });
+    const Method& method = *recipe.row();
+    const MethodOptions options = recipe.options ? recipe.options : method.defaults();
     auto colors = ColorConfig::load(recipe.colorconfig, error);
     if (!colors)
         return false;
     const std::string to = recipe.tocolorspace.empty() ? colors->scene_linear()
                                                        : colors->resolve(recipe.tocolorspace);
-    for (auto [key, name] : { std::pair { "iscolorspace", &recipe.iscolorspace },
-             std::pair { "tocolorspace", &recipe.tocolorspace } })
+    std::vector<std::string> spaces = recipe.iscolorspace;
+    spaces.resize(recipe.samples.size(), spaces.size() == 1 ? spaces[0] : "");
+    for (auto [key, name] : { std::pair { "tocolorspace", &recipe.tocolorspace } })
         if (!name->empty() && colors->resolve(*name).empty()) {
-            error = std::string(key) + "=" + *name + ": unknown colour space (known: "
-                + OIIO::Strutil::join(colors->colorspace_names(), ", ") + ")";
+            error = option_error(key, *name,
+                "unknown colour space (known: "
+                    + OIIO::Strutil::join(colors->colorspace_names(), ", ") + ")");
             return false;
         }
-    OIIO::ImageBuf synth;
-    if (!synthesize_sample(recipe, *colors, nthreads, synth, subbands, error))
+    for (const std::string& space : spaces)
+        if (!space.empty() && colors->resolve(space).empty()) {
+            error = option_error("iscolorspace", space,
+                "unknown colour space (known: "
+                    + OIIO::Strutil::join(colors->colorspace_names(), ", ") + ")");
+            return false;
+        }
+
+    std::vector<Sample> samples(recipe.samples.size());
+    std::vector<MethodInput> inputs;
+    for (size_t i = 0; i < samples.size(); ++i) {
+        if (!read_sample(recipe.samples[i], *colors, spaces[i], samples[i], error))
+            return false;
+        inputs.push_back({ samples[i].analysis ? nullptr : &samples[i].pixels,
+            samples[i].analysis.get(), recipe.samples[i] });
+    }
+    OptionImages files;
+    if (!read_option_files(options, *colors, files, error))
         return false;
-    if (!colors->convert_image(synth, colors->scene_linear(), to, true, dst, error, nthreads))
+    RunSettings settings;
+    settings.seed = recipe.seed;
+    settings.subbands = recipe.subbands && subbands;
+    MethodResult result;
+    if (!run_method(method, options, inputs, files, settings, result, error))
         return false;
-    dst.specmod().attribute("synth:sample", OIIO::Filesystem::filename(recipe.sample));
+    if (!convert_result(
+            *colors, result.image, to, method.output == MethodOutput::Volume, dst, error))
+        return false;
     dst.specmod().attribute("synth:colorspace", to);
     dst.specmod().attribute("oiio:ColorSpace", to);
+    if (settings.subbands)
+        *subbands = std::move(result.subbands);
     return true;
 }
 

@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: Apache-2.0
+// The method registry: every command that works on texsyn's image stack — the synthesis
+// methods and the operations beside them (analysis, homogeneity check) — as one row each,
+// with its name, summary, option table, what it takes and gives, and its run function.
+//
+// The front ends iterate it and name no method in code: the `texsyn` tool's commands, its
+// stack checks, --help and --list-methods; recipes (JSON, REST arguments, their schema) and
+// the OIIO plugin; the generated option docs. Adding a method is its folder under
+// core/src, one row in core/src/methods/registry.cpp, its tests and its doc page
+// (docs/adding-a-method.md).
+//
+// Rules for everything here:
+//  - Errors come back as one-line messages (false, `error`); nothing throws.
+//  - run_method() validates before it allocates, and is deterministic for a seed whatever
+//    RunSettings::nthreads is.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <typeinfo>
+#include <utility>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <texsyn/options.h>
+#include <texsyn/stats.h>
+#include <texsyn/subbands.h>
+
+namespace texsyn {
+
+/// A method's options, whatever the method: its options struct together with that struct's
+/// option table. Value semantics (copies are deep).
+class MethodOptions {
+public:
+    MethodOptions() = default;
+    /// Holds `value`, described by `table` (by default T::table()); T has
+    /// `bool validate(std::string&) const`.
+    template <class T>
+    explicit MethodOptions(T value, const OptionTable<T>& table = T::table())
+        : m_holder(std::make_unique<Holder<T>>(std::move(value), table))
+    { }
+    MethodOptions(const MethodOptions& other);
+    MethodOptions& operator=(const MethodOptions& other);
+    MethodOptions(MethodOptions&&) noexcept = default;
+    MethodOptions& operator=(MethodOptions&&) noexcept = default;
+    ~MethodOptions();
+
+    /// Whether it holds options (a default-constructed one does not).
+    explicit operator bool() const { return bool(m_holder); }
+
+    /// The option table (empty if it holds nothing).
+    const OptionList& table() const;
+    /// Sets one option from text (OptionList::set).
+    bool set(std::string_view name, std::string_view value, std::string& error);
+    /// Applies "name=value:…" (OptionList::apply).
+    bool apply(std::string_view text, std::string& error);
+    /// The text of option `name` ("" if there is no such option).
+    std::string value(std::string_view name) const;
+    /// "name=value:…" with every option but the file options (synth:options, recipes).
+    std::string format() const;
+    /// The struct's validate(): every range and the rules between options.
+    bool validate(std::string& error) const;
+
+    /// The options struct if it is a T, else null.
+    template <class T>
+    const T* get() const
+    {
+        return m_holder && m_holder->type() == typeid(T) ? static_cast<const T*>(m_holder->data())
+                                                         : nullptr;
+    }
+    template <class T>
+    T* get()
+    {
+        return m_holder && m_holder->type() == typeid(T) ? static_cast<T*>(m_holder->data())
+                                                         : nullptr;
+    }
+
+private:
+    struct Base {
+        virtual ~Base() = default;
+        virtual std::unique_ptr<Base> clone() const = 0;
+        virtual void* data() = 0;
+        virtual const void* data() const = 0;
+        virtual const OptionList& table() const = 0;
+        virtual bool validate(std::string& error) const = 0;
+        virtual const std::type_info& type() const = 0;
+    };
+    template <class T>
+    struct Holder final : Base {
+        Holder(T v, const OptionTable<T>& t)
+            : value(std::move(v))
+            , options(&t)
+        { }
+        std::unique_ptr<Base> clone() const override
+        {
+            return std::make_unique<Holder>(value, *options);
+        }
+        void* data() override { return &value; }
+        const void* data() const override { return &value; }
+        const OptionList& table() const override { return *options; }
+        bool validate(std::string& error) const override { return value.validate(error); }
+        const std::type_info& type() const override { return typeid(T); }
+        T value;
+        const OptionTable<T>* options;
+    };
+    std::unique_ptr<Base> m_holder;
+};
+
+/// What a method takes from the stack (the tool's image stack, a recipe's samples, a
+/// Python call's arguments), in the order they were pushed.
+enum class MethodInputs {
+    None,           ///< nothing: a generator
+    OptionalImage,  ///< an image if there is one (a transfer from it), else nothing
+    Image,          ///< one image
+    Sample,         ///< one image, or an analysis of one
+    ImageAndSample, ///< an image (whose layout is kept), then a sample or analysis
+    Samples,        ///< Method::count(options) samples, each an image or an analysis
+};
+
+/// What a method gives.
+enum class MethodOutput {
+    Image,    ///< a 2-D image
+    Volume,   ///< a 3-D image (solid texture)
+    Analysis, ///< the statistics of its input (an analysis file's contents)
+    Report,   ///< a text report on its input, which it leaves where it was
+};
+
+/// One input of a run: an image (scene-linear float) or an analysis.
+struct MethodInput {
+    const OIIO::ImageBuf* image = nullptr;
+    const TextureStatistics* analysis = nullptr;
+    std::string name; ///< what to call it in messages and reports, e.g. its file name
+};
+
+/// What the front end sets besides the options; none of it changes the result.
+struct RunSettings {
+    uint64_t seed = 0;
+    int nthreads = 0; ///< 0 = OIIO's default
+    /// Called with the fraction done (0..1) from the calling thread; may be empty.
+    std::function<void(float)> progress;
+    bool subbands = false; ///< fill MethodResult::subbands (methods that have them)
+};
+
+/// What a run gives (MethodOutput says which member).
+struct MethodResult {
+    OIIO::ImageBuf image; ///< Image, or Volume (spec.depth slices); float, scene-linear
+    std::shared_ptr<TextureStatistics> analysis; ///< Analysis
+    std::string report;                          ///< Report
+    std::vector<NamedImage> subbands;            ///< with RunSettings::subbands
+    /// The images of the output-file options that name a file, by option name (e.g.
+    /// "map", the source map), for the front end to write.
+    std::vector<std::pair<std::string, OIIO::ImageBuf>> files;
+};
+
+/// The images an input-file option names (read by read_option_files, inputs.h), by
+/// option name.
+using OptionImages = std::map<std::string, OIIO::ImageBuf>;
+
+/// A method's work: `inputs` are checked (count and kinds) and `options` validated.
+using MethodRun = std::function<bool(const MethodOptions& options,
+    const std::vector<MethodInput>& inputs, const OptionImages& files, const RunSettings& settings,
+    MethodResult& result, std::string& error)>;
+
+/// One row of the registry. Rows are written as aggregates, in member order: name, what
+/// it takes and gives, its options and run, its doc page and texts, then the optional
+/// members.
+struct Method {
+    std::string name; ///< "pyramid": --pyramid, "method": "pyramid", texsyn.pyramid
+    MethodInputs inputs = MethodInputs::Image;
+    MethodOutput output = MethodOutput::Image;
+    /// The options with their defaults.
+    std::function<MethodOptions()> defaults;
+    MethodRun run;
+    std::string doc;       ///< its page in docs/, e.g. "choosy.md"
+    std::string summary;   ///< one line (--list-methods)
+    std::string help;      ///< what it does with the stack and its result (--help)
+    bool subbands = false; ///< it can give its pyramid's subbands (--subbands)
+    /// Samples: how many the options ask for.
+    std::function<int(const MethodOptions&)> count = {};
+    /// Which input the result's colours come from (whose file encoding an 8-bit output
+    /// keeps); empty = the last.
+    std::function<int(const MethodOptions&)> colours_from = {};
+    /// Rewrites the tool's shorthand forms of its modifiers into options (may be empty).
+    std::function<std::string(const std::string&)> shorthands = {};
+
+    /// How many items it takes when `available` are on the stack.
+    int input_count(const MethodOptions& options, int available) const;
+    /// Whether input `index` of a run may be an analysis.
+    bool accepts_analysis(int index) const;
+    /// Whether its result can be written as a recipe (an image or a volume).
+    bool makes_recipes() const
+    {
+        return output == MethodOutput::Image || output == MethodOutput::Volume;
+    }
+};
+
+/// Every row, in the order --help lists them.
+const std::vector<const Method*>& methods();
+
+/// The row called `name`, or null.
+const Method* find_method(std::string_view name);
+
+/// "a|b|c": the names of the rows that make recipes (all rows with `all`).
+std::string method_names(bool all = false);
+
+/// Runs `method` with `options` on `inputs`: checks the options (validate()), the inputs'
+/// count and kinds (naming each by MethodInput::name), that every input-file option that
+/// names a file has its image in `files`, then calls the row's run function with any
+/// exception turned into a message. The result names its inputs (their file names without
+/// folders): synth:sample (a transfer's image: synth:image), or an analysis's `source`.
+/// False with a message otherwise.
+bool run_method(const Method& method, const MethodOptions& options,
+    const std::vector<MethodInput>& inputs, const OptionImages& files, const RunSettings& settings,
+    MethodResult& result, std::string& error);
+
+} // namespace texsyn

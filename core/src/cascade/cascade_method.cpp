@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: Apache-2.0
+// The registry row of the cascade: a generator, or a transfer from an image; control and
+// palette images named by file options.
+#include <texsyn/cascade.h>
+#include <texsyn/methods.h>
+
+#include "cascade_pvt.h"
+#include "methods/method_helpers_pvt.h"
+
+namespace texsyn::detail {
+
+namespace {
+
+// The cascade's options and the files they name: dilation= and rotation= (one-channel
+// control images, read as their numbers) and palette= (an image read like a sample, whose
+// colours the result takes).
+struct CascadeWithFiles {
+    CascadeOptions options;
+    std::string dilation, rotation, palette;
+
+    static const OptionTable<CascadeWithFiles>& table()
+    {
+        using O = CascadeWithFiles;
+        return declared_table<O>([](OptionTable<O>& t) {
+            t.include(&O::options, CascadeOptions::table());
+            t.file("dilation", &O::dilation, FileUse::ReadData, "",
+                "a one-channel control image (read without colour conversion) that spreads the "
+                "kernel's taps by dmin..dmax");
+            t.file("rotation", &O::rotation, FileUse::ReadData, "",
+                "a one-channel control image that turns the kernel's taps by 0..1 turns");
+            t.file("palette", &O::palette, FileUse::ReadImage, "",
+                "an image whose colours, by luminance rank, colour the result (instead of "
+                "ramp=)");
+        });
+    }
+    bool validate(std::string& error) const
+    {
+        return table().check(*this, error) && options.validate(error);
+    }
+};
+
+// The control image of option `name`, or null; false (with a message naming the option
+// and its file) if it has more than one channel.
+bool control(const OptionImages& files, const char* name, const std::string& file,
+    const OIIO::ImageBuf*& image, std::string& error)
+{
+    const auto it = files.find(name);
+    image = it == files.end() ? nullptr : &it->second;
+    if (!image || image->nchannels() == 1)
+        return true;
+    error = option_error(name, file,
+        "the control image has " + std::to_string(image->nchannels()) + " channels; expected 1");
+    return false;
+}
+
+bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs,
+    const OptionImages& files, const RunSettings& settings, MethodResult& result,
+    std::string& error)
+{
+    const CascadeWithFiles& given = options_of<CascadeWithFiles>(options);
+    CascadeOptions opt = given.options;
+    apply_run_settings(settings, opt);
+    const OIIO::ImageBuf *dilation = nullptr, *rotation = nullptr, *palette = nullptr;
+    if (!control(files, "dilation", given.dilation, dilation, error)
+        || !control(files, "rotation", given.rotation, rotation, error))
+        return false;
+    if (const auto it = files.find("palette"); it != files.end())
+        palette = &it->second;
+    if (cascade_synthesize(result.image, opt, inputs.empty() ? nullptr : inputs[0].image, dilation,
+            rotation, palette))
+        return true;
+    error = result.image.geterror();
+    return false;
+}
+
+} // namespace
+
+const Method& cascade_method()
+{
+    static const Method m { "cascade", MethodInputs::OptionalImage, MethodOutput::Image,
+        [] { return MethodOptions(CascadeWithFiles()); }, run, "cascade.md",
+        "iterated nonlinear maps and convolution in a multiscale cascade: a generator, or a "
+        "texture transfer from an image; seamless",
+        "Iterated nonlinear maps and convolution in a multiscale cascade (A <- p(N(A)), "
+        "circular, so it tiles). A generator: with no current image it makes one from seeded "
+        "noise; else it replaces the current image by a texture transfer from it, at its size "
+        "unless size= is given. The result is scene-linear (one channel Y, or RGB with ramp= "
+        "or palette=).",
+        false, {}, {}, cascade_shorthands };
+    return m;
+}
+
+} // namespace texsyn::detail

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: Apache-2.0
+// The registry row of the homogeneity check: a report on the current image, which stays.
+#include <texsyn/homogeneity.h>
+#include <texsyn/methods.h>
+
+namespace texsyn::detail {
+
+namespace {
+
+// --check takes no options.
+struct NoOptions {
+    static const OptionTable<NoOptions>& table()
+    {
+        return declared_table<NoOptions>([](OptionTable<NoOptions>&) {});
+    }
+    bool validate(std::string&) const { return true; }
+};
+
+bool run(const MethodOptions&, const std::vector<MethodInput>& inputs, const OptionImages&,
+    const RunSettings& settings, MethodResult& result, std::string& error)
+{
+    PlanarImage planes;
+    if (!planes_from_imagebuf(*inputs[0].image, planes, error))
+        return false;
+    result.report
+        = format_homogeneity_report(check_homogeneity(planes, settings.nthreads), inputs[0].name);
+    return true;
+}
+
+} // namespace
+
+const Method& check_method()
+{
+    static const Method m { "check", MethodInputs::Image, MethodOutput::Report,
+        [] { return MethodOptions(NoOptions()); }, run, "homogeneity.md",
+        "how homogeneous a sample is (Heeger & Bergen 1995 section 6): lighting gradient, local "
+        "mean and contrast, score and warnings",
+        "Print how homogeneous the current image is: lighting gradient, local mean and "
+        "contrast variation, score and warnings (Heeger & Bergen section 6). Leaves the image "
+        "where it is; needs no -o." };
+    return m;
+}
+
+} // namespace texsyn::detail

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: Apache-2.0
+// The homogeneity report as text (texsyn --check).
+#include <texsyn/homogeneity.h>
+
+#include <cstdio>
+
+namespace texsyn {
+
+namespace {
+
+template <class... Args>
+void append(std::string& out, const char* format, Args... args)
+{
+    char line[256];
+    std::snprintf(line, sizeof(line), format, args...);
+    out += line;
+}
+
+} // namespace
+
+std::string format_homogeneity_report(const HomogeneityReport& r, const std::string& name)
+{
+    std::string out;
+    append(out, "%s (%dx%d)\n", name.c_str(), r.width, r.height);
+    append(out, "  homogeneity score        %6.2f   %s (1 = homogeneous; poor below %.2f)\n",
+        r.score, r.poor ? "poor" : "good", homogeneity_poor_score);
+    append(out, "  illumination gradient    %6.1f%%  peak-to-peak, %s; limit %.0f%%\n",
+        100.0 * r.illumination_amplitude, r.illumination_description.c_str(),
+        100.0 * homogeneity_max_illumination_amplitude);
+    if (r.tiles_x > 0) {
+        append(out,
+            "  local mean variation     %6.1f%%  over %dx%d tiles of %dx%d px; limit %.0f%%\n",
+            100.0 * r.local_mean_variation, r.tiles_x, r.tiles_y, r.tile_size, r.tile_size,
+            100.0 * homogeneity_max_local_mean_variation);
+        append(out,
+            "  local contrast variation %6.1f%%  of each tile's std-dev / mean; limit %.0f%%\n",
+            100.0 * r.local_contrast_variation, 100.0 * homogeneity_max_local_contrast_variation);
+    }
+    for (const std::string& w : r.warnings)
+        out += "warning: " + w + "\n";
+    return out;
+}
+
+} // namespace texsyn

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: Apache-2.0
+// Options several methods take, declared once (the same name, range and help everywhere).
+#pragma once
+
+#include <texsyn/options.h>
+
+namespace texsyn::detail {
+
+/// "size": the output's WxH, 1..max_side each, 0x0 = the sample's size. T has int members
+/// width and height.
+template <class T>
+void add_output_size(OptionTable<T>& t, int max_side,
+    const char* help = "output size WxH (default: the sample's size)")
+{
+    t.size("size", &T::width, &T::height, max_side, "the sample's size", help);
+}
+
+/// "levels": the pyramid levels a coarse-to-fine method synthesizes, 1..max_levels. T has
+/// an int member levels.
+template <class T>
+void add_levels(OptionTable<T>& t, int max_levels, const char* help)
+{
+    t.integer("levels", &T::levels, 1, max_levels, help);
+}
+
+/// "eps": the approximation factor of a kd-tree search, 0..100. T has a float member eps.
+template <class T>
+void add_kdtree_eps(OptionTable<T>& t)
+{
+    t.real("eps", &T::eps, 0.0f, 100.0f,
+        "kdtree: approximation factor (a match's squared distance in PCA space may be "
+        "(1+eps) times the nearest's; 0 = exact)");
+}
+
+} // namespace texsyn::detail

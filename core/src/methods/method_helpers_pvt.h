@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: Apache-2.0
+// What every method's implementation shares: the ImageBufAlgo-style error and value-form
+// plumbing, sample validation, the synth:* tags, memory checks, seeded noise.
+#pragma once
+
+#include <cstdint>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <texsyn/fft.h>
+#include <texsyn/image.h>
+#include <texsyn/methods.h>
+#include <texsyn/options.h>
+#include <texsyn/version.h>
+
+namespace texsyn::detail {
+
+/// Runs f() (returning bool) and turns a std::bad_alloc or other exception into false
+/// with "<name>: out of memory" / "<name>: <what>" in `error`: nothing throws across the
+/// public API.
+template <class F>
+bool guarded(std::string& error, const char* name, F&& f)
+{
+    try {
+        return f();
+    } catch (const std::bad_alloc&) {
+        error = std::string(name) + ": out of memory";
+    } catch (const std::exception& e) {
+        error = std::string(name) + ": " + e.what();
+    }
+    return false;
+}
+
+/// The same for the ImageBuf forms: the message goes to dst.errorfmt().
+template <class F>
+bool guarded(OIIO::ImageBuf& dst, const char* name, F&& f)
+{
+    std::string error;
+    if (guarded(error, name, std::forward<F>(f)))
+        return true;
+    if (!error.empty())
+        dst.errorfmt("{}", error);
+    return false;
+}
+
+/// The value form of an ImageBufAlgo-style function: calls f(dst) on a new ImageBuf and
+/// guarantees has_error() if it returned false.
+template <class F>
+OIIO::ImageBuf value_form(const char* name, F&& f)
+{
+    OIIO::ImageBuf result;
+    if (!f(result) && !result.has_error())
+        result.errorfmt("{}() failed", name);
+    return result;
+}
+
+/// The start of every synthesis from one sample: opt.validate(), then the sample's planes
+/// (planes_from_imagebuf: a read error, NaN or Inf is refused). False with the message in
+/// dst.
+template <class Options>
+bool validated_sample(
+    OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Options& opt, PlanarImage& in)
+{
+    std::string error;
+    if (!opt.validate(error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+    if (sample.has_error()) {
+        dst.errorfmt("sample: {}", sample.geterror());
+        return false;
+    }
+    if (!planes_from_imagebuf(sample, in, error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+    return true;
+}
+
+/// Sets synth:version, synth:method, synth:seed and synth:options (the options' text).
+void tag_synthesis(
+    OIIO::ImageSpec& spec, const char* method, uint64_t seed, const std::string& options);
+
+/// The end of a copying synthesis (neighbourhood, choosy): dst gets `channels` with the
+/// sample's channel names, alpha and alpha association (`in` read from `sample`), and the
+/// tags synth:version, synth:method, synth:seed and synth:options (`resolved`, the options
+/// with the output size filled in); so does `source_map` if not null.
+template <class Options>
+void write_synthesis(OIIO::ImageBuf& dst, std::vector<Plane> channels, const PlanarImage& in,
+    const OIIO::ImageBuf& sample, const char* method, const Options& resolved,
+    OIIO::ImageBuf* source_map)
+{
+    const bool unassociated = sample.spec().get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
+    PlanarImage result;
+    result.channels = std::move(channels);
+    result.channel_names = in.channel_names;
+    result.alpha_channel = in.alpha_channel;
+    imagebuf_from_planes(result, dst, !unassociated);
+    const std::string options = Options::table().format(resolved);
+    tag_synthesis(dst.specmod(), method, resolved.seed, options);
+    if (source_map)
+        tag_synthesis(source_map->specmod(), method, resolved.seed, options);
+}
+
+/// The options struct of a registry row's options (a logic error, caught by run_method,
+/// if they are another method's).
+template <class Options>
+const Options& options_of(const MethodOptions& options)
+{
+    const Options* o = options.get<Options>();
+    if (!o)
+        throw std::logic_error("the options are not the method's");
+    return *o;
+}
+
+/// The front ends' seed, threads and progress in a method's options struct.
+template <class Options>
+void apply_run_settings(const RunSettings& settings, Options& opt)
+{
+    opt.seed = settings.seed;
+    opt.nthreads = settings.nthreads;
+    opt.progress = settings.progress;
+}
+
+/// False with "fft=fftw : not available …" unless `fft`'s backend is built in.
+bool check_fft_backend(FftBackend fft, std::string& error);
+
+/// "1 channel", "3 channels".
+std::string count_text(int n, const std::string& noun);
+
+/// "1.5 GB" style.
+std::string format_bytes(double bytes);
+
+/// False (with "size=WxH would need about … of memory (this machine has …)") if `need`
+/// bytes exceed the machine's physical memory.
+bool check_memory(size_t need, const std::string& what, std::string& error);
+
+/// Uniform noise in [0, 1), pixel i from random_uniform(seed, stream, i).
+Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream);
+
+} // namespace texsyn::detail

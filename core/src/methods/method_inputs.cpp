@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: Apache-2.0
+// Samples and option files read for a method, the same way for every front end.
+#include <texsyn/inputs.h>
+
+#include <filesystem>
+
+#include <texsyn/io.h>
+
+namespace texsyn {
+
+bool read_sample(const std::string& filename, const ColorConfig& colors,
+    const std::string& colorspace, Sample& sample, std::string& error, int nthreads)
+{
+    Sample s;
+    s.filename = filename;
+    if (is_analysis_filename(filename)) {
+        if (!colorspace.empty()) {
+            error = filename
+                + ": is an analysis, its statistics are already scene-linear "
+                  "(it takes no colour space)";
+            return false;
+        }
+        auto stats = std::make_shared<TextureStatistics>();
+        if (!read_statistics(filename, *stats, error))
+            return false;
+        s.colorspace = stats->colorspace;
+        s.file_format
+            = stats->sample_format.empty() ? OIIO::TypeFloat : OIIO::TypeDesc(stats->sample_format);
+        s.analysis = std::move(stats);
+        sample = std::move(s);
+        return true;
+    }
+    OIIO::ImageSpec native;
+    if (!read_image(filename, s.file_pixels, error, &native))
+        return false;
+    s.file_format = native.format;
+    if (!relinearize_sample(s, colors,
+            colorspace.empty() ? colors.guess_colorspace(native) : colorspace, error, nthreads))
+        return false;
+    sample = std::move(s);
+    return true;
+}
+
+bool relinearize_sample(Sample& sample, const ColorConfig& colors, const std::string& colorspace,
+    std::string& error, int nthreads)
+{
+    if (sample.analysis) {
+        error = sample.filename + ": is an analysis, its statistics are already scene-linear";
+        return false;
+    }
+    const std::string space = colors.resolve(colorspace);
+    if (space.empty()) {
+        error = "unknown colour space '" + colorspace + "'";
+        return false;
+    }
+    // Kept un-associated: colour under zero alpha must survive to the output.
+    if (!colors.convert_image(sample.file_pixels, space, colors.scene_linear(), false,
+            sample.pixels, error, nthreads)) {
+        error = sample.filename + ": " + error;
+        return false;
+    }
+    sample.colorspace = space;
+    return true;
+}
+
+bool read_option_files(const MethodOptions& options, const ColorConfig& colors, OptionImages& files,
+    std::string& error, int nthreads)
+{
+    for (const OptionField& f : options.table().fields()) {
+        const std::string file = options.value(f.name);
+        if (f.type != OptionType::InputFile || file.empty())
+            continue;
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(file, ec)) {
+            error = option_error(f.name, file,
+                std::filesystem::exists(file, ec) ? "not a regular file" : "no such file");
+            return false;
+        }
+        OIIO::ImageBuf image;
+        std::string why;
+        // read_image's messages start with the file's name, which the option already gives.
+        auto reason = [&file](const std::string& message) {
+            const std::string prefix = file + ": ";
+            return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+        };
+        if (f.file == FileUse::ReadImage) {
+            Sample s;
+            if (!read_sample(file, colors, "", s, why, nthreads) || s.analysis) {
+                error = option_error(
+                    f.name, file, s.analysis ? "is an analysis, not an image" : reason(why));
+                return false;
+            }
+            image = std::move(s.pixels);
+        } else if (!read_image(file, image, why)) {
+            error = option_error(f.name, file, reason(why));
+            return false;
+        }
+        files[f.name] = std::move(image);
+    }
+    return true;
+}
+
+} // namespace texsyn

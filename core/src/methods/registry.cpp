@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: Apache-2.0
+// The registry's rows, listed once, and the checks every run goes through.
+#include <texsyn/methods.h>
+
+#include <new>
+
+#include <OpenImageIO/filesystem.h>
+
+namespace texsyn {
+
+namespace detail {
+// The rows, each defined in its method's folder (<method>/<method>_method.cpp).
+const Method& pyramid_method();
+const Method& solid_method();
+const Method& mix_method();
+const Method& transfer_method();
+const Method& neighborhood_method();
+const Method& choosy_method();
+const Method& cascade_method();
+const Method& analyze_method();
+const Method& check_method();
+} // namespace detail
+
+const std::vector<const Method*>& methods()
+{
+    static const std::vector<const Method*> rows = {
+        &detail::pyramid_method(),
+        &detail::solid_method(),
+        &detail::mix_method(),
+        &detail::transfer_method(),
+        &detail::neighborhood_method(),
+        &detail::choosy_method(),
+        &detail::cascade_method(),
+        &detail::analyze_method(),
+        &detail::check_method(),
+    };
+    return rows;
+}
+
+const Method* find_method(std::string_view name)
+{
+    for (const Method* m : methods())
+        if (m->name == name)
+            return m;
+    return nullptr;
+}
+
+std::string method_names(bool all)
+{
+    std::string names;
+    for (const Method* m : methods())
+        if (all || m->makes_recipes())
+            names += (names.empty() ? "" : "|") + m->name;
+    return names;
+}
+
+int Method::input_count(const MethodOptions& options, int available) const
+{
+    switch (inputs) {
+    case MethodInputs::None:
+        return 0;
+    case MethodInputs::OptionalImage:
+        return available > 0 ? 1 : 0;
+    case MethodInputs::Image:
+    case MethodInputs::Sample:
+        return 1;
+    case MethodInputs::ImageAndSample:
+        return 2;
+    case MethodInputs::Samples:
+        return count(options);
+    }
+    return 0;
+}
+
+bool Method::accepts_analysis(int index) const
+{
+    return inputs == MethodInputs::Sample || inputs == MethodInputs::Samples
+        || (inputs == MethodInputs::ImageAndSample && index == 1);
+}
+
+namespace {
+
+// synth:sample names the samples (file names without folders); a transfer's image is
+// synth:image. An analysis records its sample's name.
+void name_inputs(const Method& method, const std::vector<MethodInput>& inputs, MethodResult& result)
+{
+    std::string samples;
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        const std::string name = OIIO::Filesystem::filename(inputs[i].name);
+        if (method.inputs == MethodInputs::ImageAndSample && i == 0)
+            result.image.specmod().attribute("synth:image", name);
+        else
+            samples += (samples.empty() ? "" : ",") + name;
+    }
+    if (result.analysis)
+        result.analysis->source = samples;
+    else if (!samples.empty() && result.image.initialized())
+        result.image.specmod().attribute("synth:sample", samples);
+}
+
+} // namespace
+
+bool run_method(const Method& method, const MethodOptions& options,
+    const std::vector<MethodInput>& inputs, const OptionImages& files, const RunSettings& settings,
+    MethodResult& result, std::string& error)
+{
+    if (!options.validate(error))
+        return false;
+    const int n = int(inputs.size());
+    const int wanted = method.input_count(options, n);
+    if (n != wanted) {
+        error = method.name + " takes " + std::to_string(wanted) + " input"
+            + (wanted == 1 ? "" : "s") + ", got " + std::to_string(n);
+        return false;
+    }
+    for (int i = 0; i < n; ++i) {
+        const MethodInput& in = inputs[size_t(i)];
+        if (!in.image == !in.analysis) {
+            error = "input " + std::to_string(i) + " (" + in.name
+                + ") is missing (give an image or an analysis)";
+            return false;
+        }
+        if (in.analysis && !method.accepts_analysis(i)) {
+            error = in.name + " is an analysis, not an image (" + method.name
+                + " needs the image it was made from)";
+            return false;
+        }
+    }
+    for (const OptionField& f : options.table().fields())
+        if (f.type == OptionType::InputFile && !options.value(f.name).empty()
+            && !files.count(f.name)) {
+            error = option_error(f.name, options.value(f.name), "the file was not read");
+            return false;
+        }
+    try {
+        if (!method.run(options, inputs, files, settings, result, error))
+            return false;
+        name_inputs(method, inputs, result);
+        return true;
+    } catch (const std::bad_alloc&) {
+        error = method.name + ": out of memory";
+    } catch (const std::exception& e) {
+        error = method.name + ": " + e.what();
+    }
+    return false;
+}
+
+} // namespace texsyn

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: Apache-2.0
+// Writing source-coordinate maps (neighborhood.h, choosy.h): shared by every method that
+// copies sample pixels.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <texsyn/methods.h>
+#include <texsyn/options.h>
+
+#include "method_helpers_pvt.h"
+
+namespace texsyn::detail {
+
+/// `map` becomes a width x height 2-channel float image ("x", "y"): pixel i holds the
+/// coordinates of source[i], an index y * source_width + x into the sample, and
+/// "synth:sample_size" = "<sample_width>x<sample_height>" (what apply_source_map checks).
+void write_source_map(OIIO::ImageBuf& map, const std::vector<uint32_t>& source, int width,
+    int height, int source_width, int sample_width, int sample_height);
+
+/// The options of a method that copies sample pixels (neighbourhood, choosy) with the
+/// source map it writes: map=FILE.exr, a file name, so not one of the method's options.
+template <class Options>
+struct WithSourceMap {
+    Options options;
+    std::string map;
+
+    static const OptionTable<WithSourceMap>& table()
+    {
+        return declared_table<WithSourceMap>([](OptionTable<WithSourceMap>& t) {
+            t.include(&WithSourceMap::options, Options::table());
+            t.file("map", &WithSourceMap::map, FileUse::Write, ".exr",
+                "also write the source map: the 2-channel float OpenEXR of the sample "
+                "coordinate each output pixel was copied from (--apply-map reuses it)");
+        });
+    }
+    bool validate(std::string& error) const
+    {
+        return table().check(*this, error) && options.validate(error);
+    }
+};
+
+/// The run of a registry row for a method that copies sample pixels: `synthesize` (e.g.
+/// choosy_synthesize) from the one image input, with the source map when map= names a
+/// file (MethodResult::files["map"]).
+template <class Options>
+bool run_copying_method(const MethodOptions& options, const std::vector<MethodInput>& inputs,
+    const RunSettings& settings, MethodResult& result, std::string& error,
+    bool (*synthesize)(OIIO::ImageBuf&, const OIIO::ImageBuf&, const Options&, OIIO::ImageBuf*))
+{
+    const WithSourceMap<Options>& given = options_of<WithSourceMap<Options>>(options);
+    Options opt = given.options;
+    apply_run_settings(settings, opt);
+    OIIO::ImageBuf map;
+    if (!synthesize(result.image, *inputs[0].image, opt, given.map.empty() ? nullptr : &map)) {
+        error = result.image.geterror();
+        return false;
+    }
+    if (!given.map.empty())
+        result.files.emplace_back("map", std::move(map));
+    return true;
+}
+
+/// The registry row of a method that copies sample pixels: one image in, its synthesis by
+/// `synthesize` out, options WithSourceMap<Options>.
+template <class Options>
+Method copying_method(const char* name, const char* doc, const char* summary, const char* help,
+    bool (*synthesize)(OIIO::ImageBuf&, const OIIO::ImageBuf&, const Options&, OIIO::ImageBuf*))
+{
+    return { name, MethodInputs::Image, MethodOutput::Image,
+        [] { return MethodOptions(WithSourceMap<Options>()); },
+        [synthesize](const MethodOptions& options, const std::vector<MethodInput>& inputs,
+            const OptionImages&, const RunSettings& settings, MethodResult& result,
+            std::string& error) {
+            return run_copying_method<Options>(
+                options, inputs, settings, result, error, synthesize);
+        },
+        doc, summary, help };
+}
+
+} // namespace texsyn::detail

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: Apache-2.0
+// The registry row of texture mixtures: as many samples (images or analyses) as the
+// options name.
+#include <texsyn/methods.h>
+#include <texsyn/mix.h>
+
+#include "methods/method_helpers_pvt.h"
+
+namespace texsyn::detail {
+
+namespace {
+
+bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, const OptionImages&,
+    const RunSettings& settings, MethodResult& result, std::string& error)
+{
+    MixOptions opt = options_of<MixOptions>(options);
+    apply_run_settings(settings, opt.synthesis);
+    std::vector<MixSample> samples;
+    for (const MethodInput& in : inputs)
+        samples.push_back(in.image ? MixSample(in.image) : MixSample(in.analysis));
+    if (mix_synthesize(result.image, samples, opt, settings.subbands ? &result.subbands : nullptr))
+        return true;
+    error = result.image.geterror();
+    return false;
+}
+
+} // namespace
+
+const Method& mix_method()
+{
+    static const Method m { "mix", MethodInputs::Samples, MethodOutput::Image,
+        [] { return MethodOptions(MixOptions()); }, run, "mixtures.md",
+        "Heeger & Bergen 1995 section 5: texture mixtures (palette of one sample and pattern "
+        "of another, low and high bands, averaged histograms)",
+        "Heeger & Bergen 1995 section 5 texture mixture of the top images or analyses (sample "
+        "0 is the one pushed first): one mode of palette=I:pattern=J (colour of I, subband "
+        "statistics of J), split=S (scales >= S and the low-pass of sample 0, finer bands of "
+        "sample 1) or weights=W0,W1,... (averaged histograms; pops one image per weight, else "
+        "2).",
+        true, [](const MethodOptions& o) { return options_of<MixOptions>(o).nsamples(); },
+        [](const MethodOptions& o) { return options_of<MixOptions>(o).palette.value_or(0); } };
+    return m;
+}
+
+} // namespace texsyn::detail

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+// The registry row of the solid method: a sample in, a volume out.
+#include <texsyn/methods.h>
+#include <texsyn/solid.h>
+
+#include "methods/method_helpers_pvt.h"
+
+namespace texsyn::detail {
+
+namespace {
+
+bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, const OptionImages&,
+    const RunSettings& settings, MethodResult& result, std::string& error)
+{
+    SolidOptions opt = options_of<SolidOptions>(options);
+    apply_run_settings(settings, opt);
+    if (solid_synthesize(result.image, *inputs[0].image, opt))
+        return true;
+    error = result.image.geterror();
+    return false;
+}
+
+} // namespace
+
+const Method& solid_method()
+{
+    static const Method m { "solid", MethodInputs::Image, MethodOutput::Volume,
+        [] { return MethodOptions(SolidOptions()); }, run, "solid.md",
+        "Heeger & Bergen 1995 section 4: solid textures (3-D blocks) from a 2-D sample, "
+        "seamless",
+        "Heeger & Bergen 1995 section 4 solid texture of the current image: a 3-D block whose "
+        "slices look like it. Write it with -o FILE.vdb (OpenVDB: grids Cd and density) or -o "
+        "FILE.exr (one part per z slice)." };
+    return m;
+}
+
+} // namespace texsyn::detail

@@ -1,0 +1,332 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "command_line.h"
+
+#include <filesystem>
+
+#include <unistd.h>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
+
+#include <texsyn/io.h>
+
+#include "cli_error.h"
+#include "commands.h"
+#include "output_format.h"
+
+namespace texsyn::cli {
+
+bool takes_argument(const std::string& a)
+{
+    return a == "--seed" || a == "--threads" || a == "--colorconfig" || a == "--iscolorspace"
+        || a == "--tocolorspace" || a == "-d" || a == "-o" || a == "--recipe";
+}
+
+bool is_flag(const std::string& a)
+{
+    return a == "-v" || a == "--subbands" || a == "--help" || a == "-h" || a == "--version"
+        || a == "--list-methods";
+}
+
+std::pair<std::string, std::string> split_command(const std::string& a)
+{
+    size_t colon = a.find(':');
+    if (colon == std::string::npos)
+        return { a, "" };
+    return { a.substr(0, colon), a.substr(colon + 1) };
+}
+
+namespace {
+
+// What the check knows of each item the run will put on the stack.
+struct PlannedItem {
+    ItemKind kind = ItemKind::Image;
+    std::string name;  ///< its file's name, or its result_name()
+    bool made = false; ///< a command's result
+};
+
+// "--pyramid, --mix and --transfer": the commands that take analyses.
+std::string analysis_takers()
+{
+    std::vector<std::string> names;
+    for (const Method* m : methods())
+        if (m->accepts_analysis(0) || m->accepts_analysis(1))
+            names.push_back("--" + m->name);
+    std::string s;
+    for (size_t i = 0; i < names.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return s;
+}
+
+// The items command `name` of row `m` pops must be of a kind it takes.
+void check_inputs(const std::string& name, const Method& m, const std::vector<PlannedItem>& popped)
+{
+    for (size_t i = 0; i < popped.size(); ++i) {
+        if (popped[i].kind == ItemKind::Volume)
+            throw CliError(name
+                + " : the current image is a solid texture (from --solid); it needs a 2-D image");
+        if (popped[i].kind == ItemKind::Analysis && !m.accepts_analysis(int(i)))
+            throw CliError(name + " : needs an image, not an analysis ("
+                + (popped[i].made ? "the " : "") + popped[i].name + "; only " + analysis_takers()
+                + " take analyses)");
+    }
+}
+
+// -o writes what the top item is: a volume as .vdb or a slice .exr, an analysis as .tsa.
+void check_output_kind(const std::string& out, ItemKind kind)
+{
+    const bool vdb = OIIO::Strutil::iends_with(out, ".vdb");
+    if (kind == ItemKind::Volume && !vdb && !OIIO::Strutil::iends_with(out, ".exr"))
+        throw CliError("-o " + out
+            + " : a solid texture is written as .vdb (OpenVDB) or .exr (one part per z "
+              "slice), not '"
+            + std::filesystem::path(out).extension().string() + "'");
+    if (kind != ItemKind::Volume && vdb)
+        throw CliError(
+            "-o " + out + " : .vdb holds solid textures (from --solid); the current image is 2-D");
+    if (kind == ItemKind::Analysis && !is_analysis_filename(out))
+        throw CliError("-o " + out
+            + " : the current item is an analysis; write it as *.tsa, or synthesize from it "
+              "first (--pyramid)");
+    if (kind == ItemKind::Image && is_analysis_filename(out))
+        throw CliError(
+            "-o " + out + " : analysis files are made by --analyze (the current item is an image)");
+}
+
+int64_t int_argument(const std::string& option, const std::string& value, int64_t lo, int64_t hi)
+{
+    int64_t v = 0;
+    std::string error;
+    if (!parse_int_option(option, value, lo, hi, v, error))
+        throw CliError(error);
+    return v;
+}
+
+OIIO::TypeDesc data_format_argument(const std::string& v)
+{
+    OIIO::TypeDesc t(v);
+    if (t != OIIO::TypeUInt8 && t != OIIO::TypeUInt16 && t != OIIO::TypeHalf
+        && t != OIIO::TypeFloat)
+        throw CliError("-d : unknown data format '" + v + "' (use uint8, uint16, half or float)");
+    return t;
+}
+
+// An output path (of -o, --recipe or a file option) must not name an input and must be
+// writable.
+void check_output_path(
+    const std::string& option, const std::string& out, const std::vector<std::string>& inputs)
+{
+    for (const std::string& in : inputs)
+        if (in == out || same_file(in, out))
+            throw CliError(option + " " + out + " : refusing to overwrite the input " + in);
+    std::filesystem::path dir = std::filesystem::path(out).parent_path();
+    if (dir.empty())
+        dir = ".";
+    std::error_code ec;
+    if (std::filesystem::is_directory(out, ec))
+        throw CliError(option + " " + out + " : is a directory");
+    if (!std::filesystem::is_directory(dir, ec))
+        throw CliError(option + " " + out + " : directory " + dir.string() + " does not exist");
+    if (::access(dir.c_str(), W_OK) != 0)
+        throw CliError(option + " " + out + " : directory " + dir.string() + " is not writable");
+}
+
+// The options of command `name` (row `m`) from its modifiers: shorthands expanded, parsed
+// and validated; the files they read are added to `inputs` (they must exist), the files
+// they write to `side_outputs` as (option, file).
+MethodOptions command_options(const std::string& name, const Method& m,
+    const std::string& modifiers, std::vector<std::string>& inputs,
+    std::vector<std::pair<std::string, std::string>>& side_outputs)
+{
+    MethodOptions options = m.defaults();
+    std::string error;
+    if (!options.apply(m.shorthands ? m.shorthands(modifiers) : modifiers, error)
+        || !options.validate(error))
+        throw CliError(name + " : " + error);
+    for (const OptionField& f : options.table().fields()) {
+        const std::string file = options.value(f.name);
+        if (file.empty())
+            continue;
+        std::error_code ec;
+        if (f.type == OptionType::InputFile) {
+            if (!std::filesystem::is_regular_file(file, ec))
+                throw CliError(name + " : " + option_error(f.name, file, "no such file"));
+            inputs.push_back(file);
+        } else if (f.type == OptionType::OutputFile) {
+            side_outputs.emplace_back(f.name, file);
+        }
+    }
+    return options;
+}
+
+} // namespace
+
+Early check_command_line(CliState& state, const std::vector<std::string>& args)
+{
+    std::vector<std::string> inputs, outputs, recipes, colorspaces;
+    std::vector<std::pair<std::string, std::string>> side_outputs;
+    std::vector<PlannedItem> stack; // as the run will build it
+    bool volumes = false, report = false;
+    // Pops the `n` items `command` takes (checked), returning them.
+    auto pop = [&](const std::string& command, int n) {
+        if (int(stack.size()) < n)
+            throw CliError(too_few_items(command, n, int(stack.size())));
+        std::vector<PlannedItem> popped(stack.end() - n, stack.end());
+        stack.resize(stack.size() - size_t(n));
+        return popped;
+    };
+    // Everything that makes or changes an image must be followed by an -o that writes it
+    // (or a report on it).
+    size_t last_output = 0;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const Method* m = args[i].rfind("--", 0) == 0
+            ? find_method(split_command(args[i]).first.substr(2))
+            : nullptr;
+        if (args[i] == "-o" || args[i] == "--recipe")
+            last_output = ++i;
+        else if (m && m->output == MethodOutput::Report)
+            last_output = i;
+        else if (takes_argument(args[i]))
+            ++i;
+        else if (args[i] == "--apply-map")
+            i += 2;
+    }
+    auto check_written = [&](size_t i) {
+        if (last_output > 0 && i > last_output) // no -o at all is reported after the loop
+            throw CliError(args[i] + " : has no effect, nothing is written after it (add -o FILE)");
+    };
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (takes_argument(a)) {
+            if (i + 1 >= args.size())
+                throw CliError(a + " : missing argument");
+            const std::string& v = args[++i];
+            if (a == "--seed")
+                state.seed = uint64_t(int_argument("--seed", v, 0, 2147483647));
+            else if (a == "--threads")
+                state.threads = int(int_argument("--threads", v, 0, 1024));
+            else if (a == "--colorconfig")
+                state.colorconfig_path = v;
+            else if (a == "-d")
+                state.data_format = data_format_argument(v);
+            else if (a == "-o") {
+                outputs.push_back(v);
+                const PlannedItem item = pop(a, 1)[0]; // -o writes the top item and leaves it
+                check_output_kind(v, item.kind);
+                stack.push_back(item);
+            } else if (a == "--recipe") {
+                recipes.push_back(v);
+                const PlannedItem item = pop(a, 1)[0];
+                if (item.kind == ItemKind::Analysis)
+                    throw CliError("--recipe " + v
+                        + " : the current item is an analysis; recipes describe images");
+                stack.push_back(item);
+            } else if (a == "--iscolorspace" || a == "--tocolorspace") {
+                check_written(i - 1);
+                colorspaces.push_back(a + " " + v);
+            }
+        } else if (a == "--apply-map") {
+            if (i + 2 >= args.size())
+                throw CliError("--apply-map : needs two arguments, the source map and the image "
+                               "(--apply-map coords.exr height.png)");
+            check_written(i);
+            inputs.push_back(args[i + 1]);
+            inputs.push_back(args[i + 2]);
+            i += 2;
+            stack.push_back({ ItemKind::Image, args[i] });
+        } else if (is_flag(a)) {
+            if (a == "--help" || a == "-h") {
+                print_help();
+                return Early::Exit;
+            }
+            if (a == "--version") {
+                print_version();
+                return Early::Exit;
+            }
+            if (a == "--list-methods") {
+                print_methods();
+                return Early::Exit;
+            }
+            if (a == "-v")
+                state.verbose = true;
+            if (a == "--subbands")
+                state.subbands = true;
+        } else if (!a.empty() && a[0] == '-') {
+            const auto [name, modifiers] = split_command(a);
+            const Method* m = name.rfind("--", 0) == 0 ? find_method(name.substr(2)) : nullptr;
+            if (!m)
+                throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
+            check_written(i);
+            MethodOptions options = command_options(name, *m, modifiers, inputs, side_outputs);
+            const std::vector<PlannedItem> popped
+                = pop(name, m->input_count(options, int(stack.size())));
+            check_inputs(name, *m, popped);
+            state.options[i] = std::move(options);
+            volumes = volumes || m->output == MethodOutput::Volume;
+            report = report || m->output == MethodOutput::Report;
+            if (m->output == MethodOutput::Report) {
+                stack.insert(stack.end(), popped.begin(), popped.end());
+                continue;
+            }
+            std::vector<std::string> names;
+            for (const PlannedItem& item : popped)
+                names.push_back(item.name);
+            stack.push_back({ m->output == MethodOutput::Volume ? ItemKind::Volume
+                    : m->output == MethodOutput::Analysis       ? ItemKind::Analysis
+                                                                : ItemKind::Image,
+                result_name(*m, names), true });
+        } else {
+            check_written(i);
+            inputs.push_back(a);
+            stack.push_back({ is_analysis_filename(a) ? ItemKind::Analysis : ItemKind::Image,
+                OIIO::Filesystem::filename(a) });
+        }
+    }
+    if (outputs.empty() && recipes.empty() && !report && !args.empty())
+        throw CliError("nothing to do: no -o FILE (see texsyn --help)");
+    if (volumes && state.subbands)
+        throw CliError("--subbands : does not apply to --solid (solid textures have no "
+                       "inspection EXR)");
+    for (const std::string& recipe : recipes) {
+        check_output_path("--recipe", recipe, inputs);
+        if (!OIIO::Strutil::iends_with(recipe, ".texsyn"))
+            throw CliError("--recipe " + recipe + " : name the recipe *.texsyn");
+    }
+    for (const auto& [option, out] : side_outputs) {
+        check_output_path(option + "=", out, inputs);
+        for (const std::string& other : outputs)
+            if (other == out)
+                throw CliError(option + "=" + out + " : is also written by -o");
+    }
+    for (const std::string& out : outputs) {
+        check_output_path("-o", out, inputs);
+        if (is_analysis_filename(out)) {
+            if (state.subbands)
+                throw CliError("-o " + out + " : --subbands writes images, not analysis files");
+            continue;
+        }
+        auto writer = OIIO::ImageOutput::create(out);
+        if (!writer && OIIO::Strutil::iends_with(out, ".vdb")) {
+            (void)OIIO::geterror(); // written by texsyn itself, checked above
+        } else if (!writer) {
+            (void)OIIO::geterror();
+            throw CliError("-o " + out + " : no image format writes '"
+                + std::filesystem::path(out).extension().string() + "' files");
+        }
+        if (state.subbands && !OIIO::Strutil::iends_with(out, ".exr"))
+            throw CliError(
+                "-o " + out + " : --subbands writes a multi-part OpenEXR; name the output *.exr");
+        if (state.data_format != OIIO::TypeUnknown)
+            output_pixel_type(out, state.data_format, OIIO::TypeUnknown);
+    }
+    for (const std::string& option : colorspaces) {
+        const std::string name = option.substr(option.find(' ') + 1);
+        if (state.colors().resolve(name).empty())
+            throw CliError(
+                option.substr(0, option.find(' ')) + " : unknown colour space '" + name + "'");
+    }
+    return Early::Run;
+}
+
+} // namespace texsyn::cli

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: Apache-2.0
+// What the tool's arguments do to the state: read inputs, run registry commands, write
+// outputs. Each throws CliError naming the argument on failure.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <texsyn/methods.h>
+
+#include "cli_state.h"
+
+namespace texsyn::cli {
+
+/// Reads `filename` (an image, converted to scene-linear, or an analysis file) and pushes
+/// it.
+void push_input(CliState& state, const std::string& filename);
+
+/// Declares the colour space of the input on top of the stack and re-linearises it.
+void reinterpret_input(CliState& state, const std::string& colorspace);
+
+/// `--NAME[:modifiers]` of registry row `method` with its parsed `options`: pops its inputs,
+/// runs it (progress on a terminal, a timing line with -v), pushes its result (a report is
+/// printed and its input stays), and writes the files its output-file options name.
+void run_method_command(CliState& state, const Method& method, const MethodOptions& options);
+
+/// Writes the top item for `filename`: an image in the colour space and pixel type of the
+/// policy in docs/colour.md (with --subbands the multi-part inspection EXR), an analysis
+/// as *.tsa, a volume as OpenVDB or a slice EXR; with synth:* metadata; to a temporary
+/// file committed at the end of the run.
+void write_output(CliState& state, const std::string& filename);
+
+/// Writes the volume on top of the stack (write_output's volume case).
+void write_volume_output(CliState& state, const std::string& filename);
+
+/// --recipe FILE: writes the recipe of the top item (a command's result from files), with
+/// paths relative to FILE's folder.
+void write_recipe(CliState& state, const std::string& filename);
+
+/// --apply-map MAP IMAGE: reads IMAGE (an input like any other), rearranges its pixels by
+/// the source map MAP, and pushes the result, which keeps IMAGE's colour space on output.
+void run_apply_map(CliState& state, const std::string& map_file, const std::string& image_file);
+
+/// Prints --help, --list-methods and --version text to stdout.
+void print_help();
+void print_methods();
+void print_version();
+
+} // namespace texsyn::cli

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: Apache-2.0
+// Every registry command the same way: pop its inputs, run it, push its result.
+#include "cli_error.h"
+#include "commands.h"
+#include "quiet_stderr.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+#include <OpenImageIO/filesystem.h>
+
+#include <texsyn/inputs.h>
+#include <texsyn/io.h>
+
+namespace texsyn::cli {
+
+namespace {
+
+// An item's name in another item's name and in synth:sample: a file without its folders.
+std::string short_name(const StackItem& item)
+{
+    return item.file.empty() ? item.name : OIIO::Filesystem::filename(item.file);
+}
+
+// " (sample 0 = a.png, sample 1 = b.png)": which input is which, for a message about one.
+std::string legend(const Method& m, const std::vector<StackItem>& inputs)
+{
+    if (inputs.size() < 2)
+        return "";
+    std::string s;
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        const std::string role = m.inputs == MethodInputs::ImageAndSample
+            ? (i == 0 ? "image" : "sample")
+            : "sample " + std::to_string(i);
+        s += (i ? ", " : " (") + role + " = " + short_name(inputs[i]);
+    }
+    return s + ")";
+}
+
+// The recipe of `m`'s result on `inputs`, if every input is a file; else null and `why`.
+std::shared_ptr<const Recipe> recipe_of(const CliState& state, const Method& m,
+    const MethodOptions& options, const std::vector<StackItem>& inputs, std::string& why)
+{
+    if (!m.makes_recipes()) {
+        why = "--" + m.name + " makes " + item_kind_text(ItemKind::Analysis)
+            + ", and recipes describe images";
+        return nullptr;
+    }
+    auto recipe = std::make_shared<Recipe>();
+    recipe->method = m.name;
+    recipe->options = options;
+    recipe->seed = state.seed;
+    recipe->subbands = state.subbands && m.subbands;
+    recipe->colorconfig = state.colorconfig_path;
+    if (const char* env = std::getenv("OCIO"); recipe->colorconfig.empty() && env)
+        recipe->colorconfig = env;
+    std::vector<std::string> spaces;
+    for (const StackItem& item : inputs) {
+        if (item.file.empty()) {
+            why = "its input, the " + item.name
+                + ", is not a file (recipes name their samples' files: write it first and "
+                  "read that)";
+            return nullptr;
+        }
+        recipe->samples.push_back(item.file);
+        spaces.push_back(item.kind == ItemKind::Analysis ? "" : item.input_colorspace);
+    }
+    bool same = true, any = false;
+    for (const std::string& s : spaces) {
+        same = same && s == spaces[0];
+        any = any || !s.empty();
+    }
+    if (any)
+        recipe->iscolorspace = same ? std::vector<std::string> { spaces[0] } : spaces;
+    return recipe;
+}
+
+std::function<void(float)> progress_reporter(const std::string& command)
+{
+    return [command](float fraction) {
+        std::fprintf(stderr, "\rtexsyn: %s %3d%%", command.c_str(), int(fraction * 100.0f + 0.5f));
+        std::fflush(stderr);
+    };
+}
+
+// Writes `image`, the file of output-file option `option` (e.g. a source map), to `file`
+// as float, with the names of `inputs` and the command line.
+void write_option_file(CliState& state, const std::string& command, const std::string& option,
+    const std::string& file, OIIO::ImageBuf& image, const std::string& samples)
+{
+    image.specmod().attribute("synth:sample", samples);
+    image.specmod().attribute("synth:commandline", state.command_line);
+    std::string error;
+    bool ok;
+    {
+        QuietStderr quiet;
+        ok = write_image_atomic(image, state.outputs.add(file), OIIO::TypeFloat, error);
+    }
+    if (!ok)
+        throw CliError(command + " : " + option + "=" + file + " : could not write it");
+}
+
+} // namespace
+
+void run_method_command(CliState& state, const Method& m, const MethodOptions& options)
+{
+    const std::string command = "--" + m.name;
+    std::vector<StackItem> inputs
+        = state.stack.pop(command, m.input_count(options, state.stack.size()));
+    std::string error;
+    OptionImages files;
+    bool ok;
+    {
+        QuietStderr quiet;
+        ok = read_option_files(options, state.colors(), files, error, state.threads);
+    }
+    if (!ok)
+        throw CliError(command + " : " + error);
+    std::vector<MethodInput> in;
+    for (const StackItem& item : inputs)
+        in.push_back({ item.kind == ItemKind::Image ? &item.buf : nullptr, item.analysis.get(),
+            item.file.empty() ? item.name : item.file });
+    RunSettings settings;
+    settings.seed = state.seed;
+    settings.nthreads = state.threads;
+    settings.subbands = state.subbands && m.subbands;
+    if (state.progress && m.output != MethodOutput::Report)
+        settings.progress = progress_reporter(command);
+
+    MethodResult result;
+    const auto start = std::chrono::steady_clock::now();
+    ok = run_method(m, options, in, files, settings, result, error);
+    if (settings.progress)
+        std::fprintf(stderr, "\n");
+    if (!ok) {
+        const bool names_input
+            = error.find("sample") != std::string::npos || error.find("image") != std::string::npos;
+        throw CliError(command + " : " + error + (names_input ? legend(m, inputs) : ""));
+    }
+    if (m.output == MethodOutput::Report) {
+        std::fputs(result.report.c_str(), stdout);
+        std::fflush(stdout);
+        for (StackItem& item : inputs)
+            state.stack.push(std::move(item));
+        return;
+    }
+
+    StackItem item;
+    item.kind = m.output == MethodOutput::Volume ? ItemKind::Volume
+        : m.output == MethodOutput::Analysis     ? ItemKind::Analysis
+                                                 : ItemKind::Image;
+    std::vector<std::string> names;
+    for (const StackItem& input : inputs)
+        names.push_back(short_name(input));
+    item.name = result_name(m, names);
+    item.recipe = recipe_of(state, m, options, inputs, item.no_recipe);
+    // Written like the input its colours come from; a generator's like a float input's:
+    // scene-linear in float files, and in the space of untagged integer files (sRGB) in
+    // integer ones.
+    if (inputs.empty()) {
+        item.input_colorspace
+            = state.colors().guess_colorspace(OIIO::ImageSpec(1, 1, 3, OIIO::TypeUInt8));
+        item.input_format = OIIO::TypeUnknown;
+        item.output_colorspace = state.pending_tocolorspace;
+    } else {
+        const int from = m.colours_from ? m.colours_from(options) : int(inputs.size()) - 1;
+        const StackItem& base = inputs[size_t(from)];
+        item.input_colorspace = base.input_colorspace;
+        item.input_format = base.input_format;
+        item.output_colorspace = base.output_colorspace;
+    }
+    if (result.analysis) {
+        result.analysis->colorspace = item.input_colorspace;
+        result.analysis->sample_format = item.input_format.c_str();
+        item.analysis = std::move(result.analysis);
+    }
+    item.buf = std::move(result.image);
+    item.subbands = std::move(result.subbands);
+    if (state.verbose) {
+        const double secs
+            = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const std::string opts = item.buf.initialized()
+            ? std::string(item.buf.spec().get_string_attribute("synth:options"))
+            : options.format();
+        std::string from;
+        for (const StackItem& input : inputs)
+            from += (from.empty() ? " from " : ", ") + short_name(input);
+        std::fprintf(stderr, "texsyn: %s %s%s in %.2f s\n", command.c_str(), opts.c_str(),
+            from.c_str(), secs);
+    }
+    std::string samples;
+    for (const StackItem& input : inputs)
+        samples += (samples.empty() ? "" : ",") + short_name(input);
+    for (auto& [option, image] : result.files)
+        write_option_file(state, command, option, options.value(option), image, samples);
+    state.stack.push(std::move(item));
+}
+
+} // namespace texsyn::cli
