@@ -40,6 +40,21 @@ TEST_F(Cli, CascadeGeneratesAnImageWithoutInput)
     EXPECT_EQ(read("preset.exr").nchannels(), 1);
 }
 
+// A generator names no sample: not in -v, not in the metadata or the description.
+TEST_F(Cli, AGeneratorNamesNoSample)
+{
+    CliRun r = texsyn("-v --seed 1 --cascade:size=32x32 -o gen.tif");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("texsyn: --cascade preset=none:size=32x32:"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find(" from "), std::string::npos) << r.err;
+    const OIIO::ImageSpec spec = read("gen.tif").spec();
+    const std::string description = spec.get_string_attribute("ImageDescription");
+    EXPECT_EQ(description.find("texsyn "), 0u) << description;
+    EXPECT_NE(description.find(" seed 1, sRGB - Texture"), std::string::npos) << description;
+    EXPECT_EQ(description.find("sample"), std::string::npos) << description;
+    EXPECT_FALSE(spec.find_attribute("synth:sample"));
+}
+
 TEST_F(Cli, CascadeIsTheSameAtAnyThreadCount)
 {
     write_control(dir / "ctrl.exr", 0.5f);

@@ -394,6 +394,18 @@ TEST_F(Cli, VerboseOutputIntoAPipeHasNoProgressLines)
     EXPECT_EQ(r.err.find('\r'), std::string::npos);
 }
 
+// A synthesis of a synthesis names what it was made from, not the file at the start.
+TEST_F(Cli, ChainedSynthesesNameTheirRealSample)
+{
+    CliRun r = texsyn("-v stucco.png --pyramid:size=64x64:iterations=1 "
+                      "--pyramid:size=32x32:iterations=1 -d float -o out.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read("out.exr").spec().get_string_attribute("synth:sample"),
+        "pyramid synthesis of stucco.png");
+    EXPECT_NE(r.err.find(" from stucco.png in "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" from pyramid synthesis of stucco.png in "), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, RecipesAreWrittenForSynthesesOfFiles)
 {
     CliRun r = texsyn("--seed 3 stucco.png --pyramid:size=40x30:iterations=1 --recipe r.texsyn");

@@ -198,6 +198,39 @@ TEST(Cascade, TilesIsDeterministicAndTakesAnySize)
 
 // Values stay in [0, 1] and the pattern is neither flat nor white noise: neighbours are
 // correlated (the convolution's smoothness) but the values spread (the map's roughness).
+// Progress comes once per iteration of every level, rises to 1, and changes nothing.
+TEST(Cascade, ReportsProgressToTheEnd)
+{
+    CascadeOptions opt = options(64, 48);
+    opt.levels = 3;
+    opt.iterations = { 2, 3 };
+    std::vector<float> seen;
+    opt.progress = [&](float fraction) { seen.push_back(fraction); };
+    const OIIO::ImageBuf out = cascade_synthesize(opt);
+    ASSERT_FALSE(out.has_error()) << out.geterror();
+    ASSERT_EQ(seen.size(), 2u + 3u + 3u); // the last level repeats the last count
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    EXPECT_GT(seen.front(), 0.0f);
+    EXPECT_FLOAT_EQ(seen.back(), 1.0f);
+    opt.progress = nullptr;
+    EXPECT_EQ(pixel_hash(cascade_synthesize(opt)), pixel_hash(out));
+}
+
+// Without size= a generator is 512x512 and a transfer its image's size.
+TEST(Cascade, TheDefaultSizeIsTheImagesOr512)
+{
+    CascadeOptions opt;
+    opt.iterations = { 1 };
+    EXPECT_EQ(cascade_synthesize(opt).spec().width, 512);
+    OIIO::ImageBuf image(OIIO::ImageSpec(40, 24, 1, OIIO::TypeFloat));
+    OIIO::ImageBufAlgo::fill(image, { 0.5f });
+    const OIIO::ImageBuf out = cascade_synthesize(opt, &image);
+    EXPECT_EQ(out.spec().width, 40);
+    EXPECT_EQ(out.spec().height, 24);
+    EXPECT_EQ(out.spec().get_string_attribute("synth:options").find("preset=none:size=40x24:"), 0u)
+        << out.spec().get_string_attribute("synth:options");
+}
+
 TEST(Cascade, TransientPatternBetweenSmoothAndRough)
 {
     const OIIO::ImageBuf out = cascade_synthesize(options(128, 128));

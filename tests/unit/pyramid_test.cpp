@@ -3,8 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <tuple>
 #include <vector>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <texsyn/pyramid.h>
 
@@ -96,11 +102,68 @@ TEST(Pyramid, MaxScales)
 
 // ---- Laplacian ---------------------------------------------------------------------------
 
-TEST(Laplacian, RejectsBadArguments)
+namespace {
+
+// A Laplacian plan the test expects to be made.
+std::unique_ptr<Pyramid> laplacian(int width, int height, int scales, Boundary boundary)
 {
-    EXPECT_FALSE(make_laplacian_pyramid(64, 64, 0, Boundary::Circular));
-    EXPECT_FALSE(make_laplacian_pyramid(64, 7, 3, Boundary::Circular));
-    EXPECT_TRUE(make_laplacian_pyramid(8, 8, 3, Boundary::Reflect));
+    std::string error;
+    auto pyr = make_laplacian_pyramid(width, height, scales, boundary, error);
+    EXPECT_TRUE(pyr) << error;
+    return pyr;
+}
+
+std::unique_ptr<VolumePyramid> laplacian_3d(int width, int height, int depth, int scales)
+{
+    std::string error;
+    auto pyr = make_laplacian_pyramid_3d(width, height, depth, scales, error);
+    EXPECT_TRUE(pyr) << error;
+    return pyr;
+}
+
+// Runs `make` in this (forked) process with the address space limited to what it uses now
+// plus 256 MB, prints the message `make` leaves and exits with 0 if it made no plan.
+template <class Make>
+[[noreturn]] void exit_without_memory(Make&& make)
+{
+    long pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    const rlim_t limit = rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE)) + (rlim_t(256) << 20);
+    const struct rlimit rl = { limit, limit };
+    setrlimit(RLIMIT_AS, &rl);
+    std::string error;
+    const bool made = make(error);
+    std::fprintf(stderr, "%s\n", error.c_str());
+    std::exit(made ? 1 : 0);
+}
+
+} // namespace
+
+TEST(Laplacian, RejectsBadArgumentsWithAMessage)
+{
+    std::string error;
+    EXPECT_FALSE(make_laplacian_pyramid(64, 64, 0, Boundary::Circular, error));
+    EXPECT_EQ(error,
+        "Laplacian pyramid: scales=0 does not fit a 64x64 image (need scales >= 1 and width, "
+        "height >= 2^scales)");
+    EXPECT_FALSE(make_laplacian_pyramid(64, 7, 3, Boundary::Circular, error));
+    EXPECT_TRUE(make_laplacian_pyramid(8, 8, 3, Boundary::Reflect, error));
+}
+
+// A plan that cannot be allocated says so (it used to fail with an empty message).
+TEST(LaplacianDeathTest, OutOfMemoryIsAMessage)
+{
+    GTEST_FLAG_SET(death_test_style, "threadsafe"); // the process may hold OIIO's threads
+    EXPECT_EXIT(exit_without_memory([](std::string& error) {
+        return bool(make_laplacian_pyramid(1 << 28, 1 << 28, 3, Boundary::Circular, error));
+    }),
+        ::testing::ExitedWithCode(0),
+        "Laplacian pyramid: out of memory for a 268435456x268435456 image");
+    EXPECT_EXIT(exit_without_memory([](std::string& error) {
+        return bool(make_laplacian_pyramid_3d(1 << 28, 1 << 28, 1 << 28, 3, error));
+    }),
+        ::testing::ExitedWithCode(0),
+        "3-D Laplacian pyramid: out of memory for a 268435456x268435456x268435456 volume");
 }
 
 TEST(Laplacian, BandsAndPerfectReconstruction)
@@ -108,7 +171,7 @@ TEST(Laplacian, BandsAndPerfectReconstruction)
     for (Boundary b : { Boundary::Circular, Boundary::Reflect })
         for (auto [w, h] :
             std::vector<std::pair<int, int>> { { 64, 64 }, { 100, 60 }, { 37, 29 } }) {
-            auto pyr = make_laplacian_pyramid(w, h, 3, b);
+            auto pyr = laplacian(w, h, 3, b);
             ASSERT_TRUE(pyr);
             EXPECT_EQ(
                 pyr->band_names(), (std::vector<std::string> { "L0", "L1", "L2", "lowpass" }));
@@ -132,7 +195,7 @@ TEST(Laplacian, ConstantImageHasZeroBands)
 {
     for (Boundary b : { Boundary::Circular, Boundary::Reflect })
         for (auto [w, h] : std::vector<std::pair<int, int>> { { 64, 64 }, { 37, 29 } }) {
-            auto pyr = make_laplacian_pyramid(w, h, 3, b);
+            auto pyr = laplacian(w, h, 3, b);
             std::vector<Plane> bands;
             pyr->build(Plane(w, h, 0.37f), bands);
             for (int s = 0; s < 3; ++s)
@@ -145,7 +208,7 @@ TEST(Laplacian, ConstantImageHasZeroBands)
 
 TEST(Laplacian, ThreadCountIndependent)
 {
-    auto pyr = make_laplacian_pyramid(100, 60, 3, Boundary::Reflect);
+    auto pyr = laplacian(100, 60, 3, Boundary::Reflect);
     const Plane img = test_image(100, 60);
     std::vector<Plane> b1, b2;
     pyr->build(img, b1, 1);
@@ -170,18 +233,22 @@ Volume test_volume(int w, int h, int d)
 
 } // namespace
 
-TEST(Laplacian3D, RejectsBadArguments)
+TEST(Laplacian3D, RejectsBadArgumentsWithAMessage)
 {
-    EXPECT_FALSE(make_laplacian_pyramid_3d(32, 32, 32, 0));
-    EXPECT_FALSE(make_laplacian_pyramid_3d(32, 32, 7, 3));
-    EXPECT_TRUE(make_laplacian_pyramid_3d(8, 8, 8, 3));
+    std::string error;
+    EXPECT_FALSE(make_laplacian_pyramid_3d(32, 32, 32, 0, error));
+    EXPECT_FALSE(make_laplacian_pyramid_3d(32, 32, 7, 3, error));
+    EXPECT_EQ(error,
+        "3-D Laplacian pyramid: scales=3 does not fit a 32x32x7 volume (need scales >= 1 and "
+        "every side >= 2^scales)");
+    EXPECT_TRUE(make_laplacian_pyramid_3d(8, 8, 8, 3, error));
 }
 
 TEST(Laplacian3D, BandsAndPerfectReconstruction)
 {
     for (auto [w, h, d] :
         std::vector<std::tuple<int, int, int>> { { 32, 32, 32 }, { 40, 24, 16 }, { 17, 23, 19 } }) {
-        auto pyr = make_laplacian_pyramid_3d(w, h, d, 3);
+        auto pyr = laplacian_3d(w, h, d, 3);
         ASSERT_TRUE(pyr);
         EXPECT_EQ(pyr->band_names(), (std::vector<std::string> { "L0", "L1", "L2", "lowpass" }));
         const Volume v = test_volume(w, h, d);
@@ -204,7 +271,7 @@ TEST(Laplacian3D, BandsAndPerfectReconstruction)
 
 TEST(Laplacian3D, ConstantVolumeHasZeroBands)
 {
-    auto pyr = make_laplacian_pyramid_3d(17, 23, 19, 3);
+    auto pyr = laplacian_3d(17, 23, 19, 3);
     std::vector<Volume> bands;
     pyr->build(Volume(17, 23, 19, 0.37f), bands);
     for (int s = 0; s < 3; ++s)
@@ -224,8 +291,8 @@ TEST(Laplacian3D, BandsOfAPrismAreThe2DBands)
         std::copy(img.data(), img.data() + img.size(), v.slab(z));
     std::vector<Volume> b3;
     std::vector<Plane> b2;
-    make_laplacian_pyramid_3d(w, h, d, 3)->build(v, b3);
-    make_laplacian_pyramid(w, h, 3, Boundary::Circular)->build(img, b2);
+    laplacian_3d(w, h, d, 3)->build(v, b3);
+    laplacian(w, h, 3, Boundary::Circular)->build(img, b2);
     for (size_t s = 0; s < b2.size(); ++s)
         for (int z = 0; z < b3[s].depth(); ++z) {
             Plane slice;
@@ -236,7 +303,7 @@ TEST(Laplacian3D, BandsOfAPrismAreThe2DBands)
 
 TEST(Laplacian3D, ThreadCountIndependent)
 {
-    auto pyr = make_laplacian_pyramid_3d(40, 24, 16, 3);
+    auto pyr = laplacian_3d(40, 24, 16, 3);
     const Volume v = test_volume(40, 24, 16);
     std::vector<Volume> b1, b2, b3;
     pyr->build(v, b1, 1);
@@ -490,7 +557,7 @@ TEST(Pyramid, TransformBandsEqualsBuildModifyCollapse)
     std::vector<std::unique_ptr<Pyramid>> pyramids;
     pyramids.push_back(steerable(200, 120, 3, 4));
     pyramids.push_back(steerable(131, 97, 2, 3));
-    pyramids.push_back(make_laplacian_pyramid(100, 60, 3, Boundary::Circular));
+    pyramids.push_back(laplacian(100, 60, 3, Boundary::Circular));
     for (auto& pyr : pyramids) {
         const Plane image = test_image(pyr->width(), pyr->height(), 3);
         std::vector<Plane> bands;

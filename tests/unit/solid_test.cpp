@@ -82,7 +82,9 @@ std::vector<double> slice_band_variances(const Volume& v, SliceAxis axis, int sc
 {
     Plane slice;
     extract_slice(v, axis, 0, slice);
-    auto pyr = make_laplacian_pyramid(slice.width(), slice.height(), scales, Boundary::Circular);
+    std::string error;
+    auto pyr
+        = make_laplacian_pyramid(slice.width(), slice.height(), scales, Boundary::Circular, error);
     std::vector<double> var(size_t(scales), 0.0);
     std::vector<Plane> bands;
     const int n = slice_count(v, axis);

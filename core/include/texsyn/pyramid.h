@@ -77,9 +77,10 @@ int max_pyramid_scales(int sample_width, int sample_height);
 /// reduce = blur with the separable (1,4,6,4,1)/16 kernel and keep even samples (size
 /// ceil(n/2)); expand = insert zeros, blur, x4. Bands are G_k - expand(G_{k+1}), exact for
 /// any size and either boundary. `boundary`: Circular for synthesis, Reflect for analysis
-/// (§3.4). Requires 1 <= scales and width, height >= 2^scales.
+/// (§3.4). Returns nullptr and sets `error` unless 1 <= scales and width, height >=
+/// 2^scales, or if the plan cannot be allocated.
 std::unique_ptr<Pyramid> make_laplacian_pyramid(
-    int width, int height, int scales, Boundary boundary);
+    int width, int height, int scales, Boundary boundary, std::string& error);
 
 /// One level of a Gaussian pyramid: `image` blurred with the separable (1,4,6,4,1)/16
 /// kernel and subsampled to ceil(width/2) x ceil(height/2) (the Laplacian pyramid's reduce
@@ -147,11 +148,12 @@ protected:
 /// ceil(w/2^s) x ceil(h/2^s) x ceil(d/2^s); band values are in the volume's units like the
 /// 2-D bands, so a sample's 2-D band histograms apply to the 3-D bands. Exact
 /// reconstruction for any size; parallel over slabs, bit-identical at any nthreads.
-/// Returns nullptr unless 1 <= scales and width, height, depth >= 2^scales.
+/// Returns nullptr and sets `error` unless 1 <= scales and width, height, depth >=
+/// 2^scales, or if the plan cannot be allocated.
 std::unique_ptr<VolumePyramid> make_laplacian_pyramid_3d(
-    int width, int height, int depth, int scales);
+    int width, int height, int depth, int scales, std::string& error);
 
-/// Moisan's periodic + smooth decomposition (notes/pyramid-math.md): returns the periodic
+/// Moisan's periodic + smooth decomposition: returns the periodic
 /// component p of `image` (same size and mean), whose spectrum has none of the cross-shaped
 /// energy that the jump between opposite edges puts into a circular transform.
 Plane periodic_component(const Plane& image, FftBackend fft, int nthreads = 0);

@@ -116,13 +116,18 @@ std::vector<std::vector<Plane>> gaussian_pyramid(
 }
 
 std::unique_ptr<Pyramid> make_laplacian_pyramid(
-    int width, int height, int scales, Boundary boundary)
+    int width, int height, int scales, Boundary boundary, std::string& error)
 {
-    if (scales < 1 || scales > 30 || width < (1 << scales) || height < (1 << scales))
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    if (scales < 1 || scales > 30 || width < (1 << scales) || height < (1 << scales)) {
+        error = "Laplacian pyramid: scales=" + std::to_string(scales) + " does not fit a " + size
+            + " image (need scales >= 1 and width, height >= 2^scales)";
         return nullptr;
+    }
     try {
         return std::make_unique<LaplacianPyramid>(width, height, scales, boundary);
     } catch (const std::bad_alloc&) {
+        error = "Laplacian pyramid: out of memory for a " + size + " image";
         return nullptr;
     }
 }

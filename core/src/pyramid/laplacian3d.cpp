@@ -118,14 +118,20 @@ private:
 } // namespace
 
 std::unique_ptr<VolumePyramid> make_laplacian_pyramid_3d(
-    int width, int height, int depth, int scales)
+    int width, int height, int depth, int scales, std::string& error)
 {
+    const std::string size
+        = std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(depth);
     if (scales < 1 || scales > 30 || width < (1 << scales) || height < (1 << scales)
-        || depth < (1 << scales))
+        || depth < (1 << scales)) {
+        error = "3-D Laplacian pyramid: scales=" + std::to_string(scales) + " does not fit a "
+            + size + " volume (need scales >= 1 and every side >= 2^scales)";
         return nullptr;
+    }
     try {
         return std::make_unique<LaplacianPyramid3D>(width, height, depth, scales);
     } catch (const std::bad_alloc&) {
+        error = "3-D Laplacian pyramid: out of memory for a " + size + " volume";
         return nullptr;
     }
 }

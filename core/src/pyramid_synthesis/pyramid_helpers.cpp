@@ -9,7 +9,7 @@ std::unique_ptr<Pyramid> make_pyramid(const PyramidOptions& opt, int width, int 
     Boundary boundary, std::string& error)
 {
     if (opt.pyramid == PyramidKind::Laplacian)
-        return make_laplacian_pyramid(width, height, scales, boundary);
+        return make_laplacian_pyramid(width, height, scales, boundary, error);
     return make_steerable_pyramid(width, height, scales, opt.orientations, opt.fft, error);
 }
 

@@ -44,7 +44,9 @@ std::pair<int, int> slice_size(SliceAxis axis, int w, int h, int d)
 bool make_plan(
     const SolidOptions& opt, int w, int h, int d, int scales, SolidPlan& plan, std::string& error)
 {
-    plan.laplacian = make_laplacian_pyramid_3d(w, h, d, scales);
+    plan.laplacian = make_laplacian_pyramid_3d(w, h, d, scales, error);
+    if (!plan.laplacian)
+        return false;
     if (opt.pyramid == SolidPyramid::Laplacian)
         return true;
     for (int a = 0; a < 3; ++a) {
