@@ -3,6 +3,7 @@
 // bad-input case (exit code, first stderr line, no output written, input unchanged).
 #include <texsyn/color.h>
 #include <texsyn/io.h>
+#include <texsyn/methods.h>
 #include <texsyn/recipe.h>
 
 #include <cmath>
@@ -267,6 +268,36 @@ TEST_F(Cli, MalformedCommandsAndOptionsAreRefused)
         "texsyn ERROR: --pyramid : no current image (give an input file before it)");
     expect_failure("stucco.png --tocolorspace Nope --pyramid -o out.exr",
         "texsyn ERROR: --tocolorspace : unknown colour space 'Nope'");
+}
+
+// Every command of the method registry reports an option out of its range the same way,
+// through the same path: "--NAME : option=value : out of range lo..hi".
+TEST_F(Cli, EveryCommandReportsARangeErrorTheSameWay)
+{
+    int commands = 0;
+    for (const texsyn::Method* m : texsyn::methods()) {
+        const texsyn::MethodOptions defaults = m->defaults();
+        const texsyn::OptionField* f = nullptr;
+        for (const texsyn::OptionField& field : defaults.table().fields())
+            if (!f && field.type == texsyn::OptionType::Integer)
+                f = &field;
+        if (!f) // --check takes no options
+            continue;
+        const bool two = m->inputs == texsyn::MethodInputs::ImageAndSample
+            || m->inputs == texsyn::MethodInputs::Samples;
+        const bool none = m->inputs == texsyn::MethodInputs::None
+            || m->inputs == texsyn::MethodInputs::OptionalImage;
+        const std::string inputs = none ? "" : two ? "stucco.png stucco.png " : "stucco.png ";
+        const std::string out = m->output == texsyn::MethodOutput::Volume ? "out.vdb"
+            : m->output == texsyn::MethodOutput::Analysis                 ? "out.tsa"
+                                                                          : "out.exr";
+        const std::string value = std::to_string(int64_t(f->hi) + 1);
+        expect_failure(inputs + "--" + m->name + ":" + f->name + "=" + value + " -o " + out,
+            "texsyn ERROR: --" + m->name + " : " + f->name + "=" + value + " : out of range "
+                + std::to_string(int64_t(f->lo)) + ".." + std::to_string(int64_t(f->hi)));
+        ++commands;
+    }
+    EXPECT_EQ(commands, int(texsyn::methods().size()) - 1);
 }
 
 TEST_F(Cli, ImpossibleSizesAreRefusedBeforeAllocating)
@@ -710,6 +741,42 @@ TEST_F(Cli, MixAndTransferTakeTheirInputsFromTheStack)
     EXPECT_NE(r.err.find("texsyn: --mix size=64x64"), std::string::npos) << r.err;
     OIIO::ImageBuf bands((dir / "b.exr").string());
     EXPECT_EQ(bands.nsubimages(), 1 + 1 + 3 * 4 + 1); // synth + its bands (no sample's)
+}
+
+// Analysis files are samples of --mix (palette/pattern, split) and --transfer too: the
+// same pixels as the images they were made from when analysed with the same pyramid, and
+// recipes that name them.
+TEST_F(Cli, MixAndTransferTakeAnalysisFiles)
+{
+    fs::copy_file(sample_path("rust.png"), dir / "rust.png");
+    ASSERT_EQ(texsyn("rust.png --analyze:scales=3 -o rust.tsa").status, 0);
+    const std::string mix
+        = " --mix:palette=0:pattern=1:size=64x64:iterations=1:scales=3 -d float -o ";
+    ASSERT_EQ(texsyn("--seed 2 stucco.png rust.png" + mix + "a.exr").status, 0);
+    CliRun r = texsyn("--seed 2 stucco.png rust.tsa" + mix + "b.exr --recipe b.texsyn");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(pixel_hash(read("a.exr")), pixel_hash(read("b.exr")));
+    EXPECT_EQ(read("b.exr").spec().get_string_attribute("synth:sample"), "stucco.png,rust.tsa");
+    Recipe recipe;
+    std::string error;
+    ASSERT_TRUE(recipe_from_filename((dir / "b.texsyn").string(), recipe, error)) << error;
+    EXPECT_EQ(recipe.samples,
+        (std::vector<std::string> { (dir / "stucco.png").string(), (dir / "rust.tsa").string() }));
+    EXPECT_EQ(recipe.iscolorspace, (std::vector<std::string> { "sRGB - Texture", "" }));
+    OIIO::ImageBuf again;
+    ASSERT_TRUE(run_recipe(recipe, again, nullptr, error)) << error;
+    EXPECT_EQ(pixel_hash(again), pixel_hash(read("b.exr")));
+
+    const std::string transfer = " --transfer:iterations=1:scales=3 -d float -o ";
+    ASSERT_EQ(texsyn("stucco.png rust.png" + transfer + "c.exr").status, 0);
+    ASSERT_EQ(texsyn("stucco.png rust.tsa" + transfer + "d.exr").status, 0);
+    EXPECT_EQ(pixel_hash(read("c.exr")), pixel_hash(read("d.exr")));
+
+    // An analysis made with another pyramid is refused, naming it.
+    expect_failure("stucco.png rust.tsa --mix:palette=0:pattern=1:scales=2 -o e.exr",
+        "texsyn ERROR: --mix : sample 1: scales=2 : differs from the analysis (scales=3) "
+        "(sample 0 = stucco.png, sample 1 = rust.tsa)",
+        { "stucco.png", "rust.png", "rust.tsa", "a.exr", "b.exr", "b.texsyn", "c.exr", "d.exr" });
 }
 
 TEST_F(Cli, BadMixAndTransferInputIsRefused)

@@ -41,15 +41,27 @@ shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 shutil.copy(os.path.join(repo, "data", "samples", "stucco_yellow.png"), work)
 env = dict(os.environ, OCIO="")
-for method, modifiers in [
-    ("pyramid", "size=32x32:iterations=1:gain=1.5"),
-    ("neighborhood", "size=16x16:levels=1:n=3:search=exhaustive:eps=0.5"),
-    ("choosy", "size=16x16:levels=2:iterations=1,2:search=exhaustive:penalty=0.5"),
+subprocess.run([texsyn, "stucco_yellow.png", "--analyze", "-o", "stucco.tsa"], cwd=work, env=env,
+               check=True)
+for method, inputs, modifiers, out in [
+    ("pyramid", ["stucco_yellow.png"], "size=32x32:iterations=1:gain=1.5", "out.exr"),
+    ("pyramid", ["stucco.tsa"], "size=32x32:iterations=1", "out.exr"),
+    ("neighborhood", ["stucco_yellow.png"], "size=16x16:levels=1:n=3:search=exhaustive:eps=0.5",
+     "out.exr"),
+    ("choosy", ["stucco_yellow.png"],
+     "size=16x16:levels=2:iterations=1,2:search=exhaustive:penalty=0.5", "out.exr"),
+    ("solid", ["stucco_yellow.png"], "size=16x16x8:iterations=1", "out.vdb"),
+    ("mix", ["stucco_yellow.png", "stucco.tsa"], "palette=0:pattern=1:size=32x32:iterations=1",
+     "out.exr"),
+    ("transfer", ["stucco_yellow.png", "stucco.tsa"], "iterations=1", "out.exr"),
+    ("cascade", [], "preset=cells:size=32x32", "out.exr"),
+    ("cascade", ["stucco_yellow.png"], "levels=2:palette=stucco_yellow.png", "out.exr"),
 ]:
-    subprocess.run([texsyn, "stucco_yellow.png", f"--{method}:{modifiers}", "-o", "out.exr",
-                    "--recipe", f"{method}.texsyn"], cwd=work, env=env, check=True)
-    with open(os.path.join(work, f"{method}.texsyn")) as f:
-        check(f"texsyn --{method} --recipe", json.load(f), True)
+    name = f"{method}_{len(inputs)}"
+    subprocess.run([texsyn, *inputs, f"--{method}:{modifiers}", "-o", out,
+                    "--recipe", f"{name}.texsyn"], cwd=work, env=env, check=True)
+    with open(os.path.join(work, f"{name}.texsyn")) as f:
+        check(f"texsyn {' '.join(inputs)} --{method} --recipe", json.load(f), True)
 
 good = {
     "minimal": {"sample": "a.png"},
@@ -66,6 +78,16 @@ good = {
     "choosy iterations as a number": {"sample": "a.png", "method": "choosy", "iterations": 2},
     "choosy iterations as an array": {"sample": "a.png", "method": "choosy",
                                       "iterations": [1, 8]},
+    "solid": {"sample": "a.png", "method": "solid", "size": [32, 32, 16]},
+    "mix of an image and an analysis": {"sample": ["a.png", "b.tsa"], "method": "mix",
+                                        "palette": 0, "pattern": 1,
+                                        "iscolorspace": ["sRGB", ""]},
+    "mix by weights": {"sample": ["a.png", "b.png", "c.png"], "method": "mix",
+                       "weights": "1,1,2"},
+    "transfer": {"sample": ["photo.png", "rust.tsa"], "method": "transfer", "iterations": 2},
+    "cascade generator": {"method": "cascade", "preset": "stone", "size": [64, 64]},
+    "cascade with files": {"method": "cascade", "sample": "a.png", "dilation": "ctrl.exr",
+                           "kernel": "gauss5,aniso7", "levels": 2},
 }
 bad = {
     "no sample": {"size": "8x8"},
@@ -91,6 +113,16 @@ bad = {
     "choosy penalty too large": {"sample": "a.png", "method": "choosy", "penalty": 17},
     "choosy subbands": {"sample": "a.png", "method": "choosy", "subbands": True},
     "choosy from an analysis": {"sample": "a.tsa", "method": "choosy"},
+    "solid with a 2-D size": {"sample": "a.png", "method": "solid", "size": "32x32"},
+    "solid subbands": {"sample": "a.png", "method": "solid", "subbands": True},
+    "mix of one sample": {"sample": "a.png", "method": "mix", "palette": 0, "pattern": 1},
+    "transfer with a size": {"sample": ["a.png", "b.png"], "method": "transfer", "size": "8x8"},
+    "transfer onto an analysis": {"sample": ["a.tsa", "b.png"], "method": "transfer"},
+    "cascade with a sample list": {"method": "cascade", "sample": ["a.png", "b.png"]},
+    "cascade writes no map": {"method": "cascade", "map": "m.exr"},
+    "neighborhood map is the tool's": {"sample": "a.png", "method": "neighborhood",
+                                       "map": "m.exr"},
+    "cascade unknown kernel": {"method": "cascade", "kernel": "gauss5,plaid"},
 }
 for name, recipe in good.items():
     check(name, recipe, True)

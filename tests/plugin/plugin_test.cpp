@@ -274,3 +274,68 @@ TEST_F(Plugin, LibraryRecipesMatchTheFormatPlugin)
     EXPECT_EQ(OIIO::ImageBufAlgo::computePixelHashSHA1(viaplugin),
         OIIO::ImageBufAlgo::computePixelHashSHA1(direct));
 }
+
+// Every method of the registry is a recipe that stock tools open: a generator with no
+// sample, methods with several samples, a solid texture as its z slices.
+TEST_F(Plugin, GeneratorRecipesNeedNoSample)
+{
+    ToolRun r = sh("'" + texsyn_exe
+        + "' --seed 5 --cascade:preset=stone:size=64x48 -d float -o cli.exr --recipe r.texsyn");
+    ASSERT_EQ(r.status, 0) << r.out;
+    r = sh("oiiotool r.texsyn -d float -o plugin.exr && idiff -fail 0 cli.exr plugin.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    // A REST name that is no file, for a method that takes no sample.
+    r = sh("oiiotool 'noise.texsyn?method=cascade&preset=stone&size=64x48&seed=5' -d float -o "
+           "rest.exr && idiff -fail 0 cli.exr rest.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    r = sh("iinfo -v r.texsyn && maketx r.texsyn -o r.tx && iinfo -v r.tx");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("r.texsyn :   64 x   48, 3 channel, float texsyn"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("synth:method: \"cascade\""), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("synth:sample"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("MIP-map levels: 64x48 32x24"), std::string::npos) << r.out;
+}
+
+TEST_F(Plugin, MixAndTransferRecipesTakeSeveralSamples)
+{
+    fs::copy_file(std::string(TEXSYN_TEST_DATA) + "/rust.png", dir / "r.png");
+    ToolRun r = sh("'" + texsyn_exe
+        + "' --seed 5 s.png r.png --mix:palette=0:pattern=1:size=48x48:iterations=1 -d float -o "
+          "mix.exr --recipe mix.texsyn");
+    ASSERT_EQ(r.status, 0) << r.out;
+    r = sh("oiiotool mix.texsyn -d float -o a.exr && idiff -fail 0 mix.exr a.exr && oiiotool "
+           "'s.png.texsyn?method=mix&sample=s.png,r.png&palette=0&pattern=1&size=48x48&"
+           "iterations=1&seed=5' -d float -o b.exr && idiff -fail 0 mix.exr b.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    r = sh("'" + texsyn_exe
+        + "' --seed 5 s.png r.png --transfer:iterations=1 -d float -o transfer.exr --recipe "
+          "transfer.texsyn && oiiotool transfer.texsyn -d float -o c.exr && idiff -fail 0 "
+          "transfer.exr c.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    r = sh("iinfo -v transfer.texsyn && maketx mix.texsyn -o mix.tx && iinfo mix.tx");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("synth:image: \"s.png\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("synth:sample: \"r.png\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("mix.tx :   48 x   48, 3 channel"), std::string::npos) << r.out;
+}
+
+TEST_F(Plugin, SolidRecipesAreTheirZSlices)
+{
+    ToolRun r = sh("'" + texsyn_exe
+        + "' --seed 5 s.png --solid:size=24x16x6:iterations=1 -d float -o slices.exr --recipe "
+          "solid.texsyn");
+    ASSERT_EQ(r.status, 0) << r.out;
+    // The slice EXR and the recipe's subimages: the same parts, the same pixels.
+    r = sh("iinfo solid.texsyn && oiiotool solid.texsyn -a -d float -o plugin.exr && idiff -a "
+           "-fail 0 slices.exr plugin.exr && oiiotool solid.texsyn --subimage z0003 -o z3.exr");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("24 x   16, 3 channel, float texsyn (6 subimages)"), std::string::npos)
+        << r.out;
+    OIIO::ImageBuf z3((dir / "z3.exr").string());
+    EXPECT_EQ(z3.spec().width, 24);
+    EXPECT_EQ(z3.spec().get_string_attribute("synth:method"), "solid");
+    r = sh("maketx solid.texsyn -o solid.tx && iinfo -v solid.tx");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("MIP-map levels: 24x16 12x8"), std::string::npos) << r.out;
+}

@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: Apache-2.0
+// The method registry: every row is complete and consistent, option ranges are enforced
+// through one path with one message shape, and run_method checks what every front end
+// hands it.
+#include <texsyn/methods.h>
+
+#include <filesystem>
+#include <set>
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <gtest/gtest.h>
+
+using namespace texsyn;
+
+namespace {
+
+// The text of a number just past an option's upper bound, as a user would type it.
+std::string past_the_end(const OptionField& f)
+{
+    if (f.type == OptionType::Integer)
+        return std::to_string(int64_t(f.hi) + 1);
+    return format_number_list({ float(f.hi) + 1.0f });
+}
+
+// lo..hi as the messages write it.
+std::string range_of(const OptionField& f)
+{
+    if (f.type == OptionType::Integer)
+        return std::to_string(int64_t(f.lo)) + ".." + std::to_string(int64_t(f.hi));
+    return format_number_list({ float(f.lo) }) + ".." + format_number_list({ float(f.hi) });
+}
+
+OIIO::ImageBuf grey_image(int w, int h)
+{
+    OIIO::ImageBuf image(OIIO::ImageSpec(w, h, 3, OIIO::TypeFloat));
+    OIIO::ImageBufAlgo::noise(image, "uniform", 0.2f, 0.8f, false, 3);
+    return image;
+}
+
+} // namespace
+
+TEST(Methods, EveryRowIsComplete)
+{
+    std::set<std::string> names;
+    for (const Method* m : methods()) {
+        SCOPED_TRACE(m->name);
+        EXPECT_TRUE(names.insert(m->name).second) << "two rows named " << m->name;
+        EXPECT_EQ(find_method(m->name), m);
+        EXPECT_FALSE(m->summary.empty());
+        EXPECT_FALSE(m->help.empty());
+        EXPECT_TRUE(std::filesystem::exists(std::string(TEXSYN_SOURCE_DIR) + "/docs/" + m->doc))
+            << m->doc;
+        ASSERT_TRUE(m->defaults);
+        ASSERT_TRUE(m->run);
+        const MethodOptions defaults = m->defaults();
+        std::string error;
+        // The defaults are a working synthesis; a mix's mode must be chosen.
+        EXPECT_EQ(defaults.validate(error), m->name != "mix") << error;
+        EXPECT_EQ(m->inputs == MethodInputs::Samples, bool(m->count));
+        if (m->count)
+            EXPECT_GE(m->count(defaults), 2);
+        std::set<std::string> options;
+        for (const OptionField& f : defaults.table().fields()) {
+            EXPECT_TRUE(options.insert(f.name).second) << "option " << f.name << " twice";
+            EXPECT_FALSE(f.help.empty()) << f.name;
+            EXPECT_TRUE(f.parse && f.format && f.check) << f.name;
+            // What an option writes, it reads back to the same text.
+            MethodOptions copy = defaults;
+            const std::string value = defaults.value(f.name);
+            if (f.type != OptionType::InputFile && f.type != OptionType::OutputFile) {
+                EXPECT_TRUE(copy.set(f.name, value, error))
+                    << f.name << "=" << value << ": " << error;
+                EXPECT_EQ(copy.value(f.name), value) << f.name;
+            }
+        }
+    }
+    EXPECT_EQ(find_method("quilting"), nullptr);
+    EXPECT_EQ(method_names(), "pyramid|solid|mix|transfer|neighborhood|choosy|cascade");
+    EXPECT_EQ(
+        method_names(true), "pyramid|solid|mix|transfer|neighborhood|choosy|cascade|analyze|check");
+}
+
+// Ranges are declared once, in the table, and enforced the same way for every option of
+// every method: "name=value : out of range lo..hi", the value as typed.
+TEST(Methods, EveryRangeIsCheckedWithOneMessageShape)
+{
+    int checked = 0;
+    for (const Method* m : methods()) {
+        const MethodOptions defaults = m->defaults();
+        for (const OptionField& f : defaults.table().fields()) {
+            if (f.type != OptionType::Integer && f.type != OptionType::Real)
+                continue;
+            MethodOptions o = defaults;
+            std::string error;
+            const std::string value = past_the_end(f);
+            EXPECT_FALSE(o.set(f.name, value, error)) << m->name << " " << f.name;
+            EXPECT_EQ(error, f.name + "=" + value + " : out of range " + range_of(f)) << m->name;
+            EXPECT_EQ(o.value(f.name), defaults.value(f.name)) << "unchanged on failure";
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 30);
+}
+
+// MethodOptions copies deeply: a recipe's options and the tool's are independent.
+TEST(Methods, OptionsAreValues)
+{
+    MethodOptions a = find_method("choosy")->defaults();
+    MethodOptions b = a;
+    std::string error;
+    ASSERT_TRUE(b.apply("levels=2:iterations=1,8", error)) << error;
+    EXPECT_EQ(a.value("levels"), "4");
+    EXPECT_EQ(b.value("levels"), "2");
+    EXPECT_FALSE(b.apply("levels=3:levels=2", error));
+    EXPECT_EQ(error, "levels=2 : given twice");
+    EXPECT_EQ(b.format().find("size=0x0:levels=3:iterations=1,8:"), 0u) << b.format();
+    EXPECT_EQ(b.format().find("map="), std::string::npos); // file options are not options text
+    EXPECT_TRUE(MethodOptions().format().empty());
+}
+
+TEST(Methods, InputsAreCountedFromTheRowAndTheOptions)
+{
+    const MethodOptions none;
+    EXPECT_EQ(find_method("cascade")->input_count(none, 0), 0);
+    EXPECT_EQ(find_method("cascade")->input_count(none, 3), 1);
+    EXPECT_EQ(find_method("pyramid")->input_count(none, 3), 1);
+    EXPECT_EQ(find_method("transfer")->input_count(none, 3), 2);
+    MethodOptions mix = find_method("mix")->defaults();
+    std::string error;
+    ASSERT_TRUE(mix.set("weights", "1,1,1", error)) << error;
+    EXPECT_EQ(find_method("mix")->input_count(mix, 5), 3);
+    EXPECT_TRUE(find_method("pyramid")->accepts_analysis(0));
+    EXPECT_FALSE(find_method("transfer")->accepts_analysis(0));
+    EXPECT_TRUE(find_method("transfer")->accepts_analysis(1));
+    EXPECT_FALSE(find_method("choosy")->accepts_analysis(0));
+}
+
+// run_method checks options, inputs and files for every front end before the row runs.
+TEST(Methods, RunMethodChecksWhatItIsGiven)
+{
+    const OIIO::ImageBuf image = grey_image(64, 64);
+    const TextureStatistics analysis;
+    const Method& choosy = *find_method("choosy");
+    MethodOptions options = choosy.defaults();
+    std::string error;
+    ASSERT_TRUE(options.apply("size=16x16:levels=2", error)) << error;
+    MethodResult result;
+    EXPECT_FALSE(run_method(choosy, options, {}, {}, {}, result, error));
+    EXPECT_EQ(error, "choosy takes 1 input, got 0");
+    EXPECT_FALSE(
+        run_method(choosy, options, { { nullptr, &analysis, "a.tsa" } }, {}, {}, result, error));
+    EXPECT_EQ(
+        error, "a.tsa is an analysis, not an image (choosy needs the image it was made from)");
+    MethodOptions bad = options;
+    ASSERT_TRUE(bad.set("levels", "3", error));
+    ASSERT_TRUE(bad.set("iterations", "1,1,1", error));
+    ASSERT_TRUE(bad.set("levels", "2", error));
+    EXPECT_FALSE(run_method(choosy, bad, { { &image, nullptr, "a.png" } }, {}, {}, result, error));
+    EXPECT_EQ(error, "iterations=1,1,1 : 3 values for levels=2 (give 1..2)");
+    ASSERT_TRUE(
+        run_method(choosy, options, { { &image, nullptr, "maps/a.png" } }, {}, {}, result, error))
+        << error;
+    EXPECT_EQ(result.image.spec().width, 16);
+    EXPECT_EQ(result.image.spec().get_string_attribute("synth:sample"), "a.png");
+
+    const Method& cascade = *find_method("cascade");
+    MethodOptions controlled = cascade.defaults();
+    ASSERT_TRUE(controlled.apply("size=16x16:dilation=ctrl.exr", error)) << error;
+    EXPECT_FALSE(run_method(cascade, controlled, {}, {}, {}, result, error));
+    EXPECT_EQ(error, "dilation=ctrl.exr : the file was not read");
+    OptionImages files;
+    files["dilation"] = grey_image(8, 8);
+    EXPECT_FALSE(run_method(cascade, controlled, {}, files, {}, result, error));
+    EXPECT_EQ(error, "dilation=ctrl.exr : the control image has 3 channels; expected 1");
+}
+
+// Each row's output kind: a volume is a 3-D image, an analysis its statistics, a report
+// text; a transfer names its image apart.
+TEST(Methods, RowsGiveWhatTheySay)
+{
+    const OIIO::ImageBuf image = grey_image(32, 32);
+    std::string error;
+    MethodResult result;
+    MethodOptions solid = find_method("solid")->defaults();
+    ASSERT_TRUE(solid.apply("size=16x16x8:iterations=1", error)) << error;
+    ASSERT_TRUE(run_method(
+        *find_method("solid"), solid, { { &image, nullptr, "s.png" } }, {}, {}, result, error))
+        << error;
+    EXPECT_EQ(result.image.spec().depth, 8);
+
+    result = MethodResult();
+    ASSERT_TRUE(run_method(*find_method("analyze"), find_method("analyze")->defaults(),
+        { { &image, nullptr, "dir/s.png" } }, {}, {}, result, error))
+        << error;
+    ASSERT_TRUE(result.analysis);
+    EXPECT_EQ(result.analysis->source, "s.png");
+
+    result = MethodResult();
+    ASSERT_TRUE(run_method(*find_method("check"), find_method("check")->defaults(),
+        { { &image, nullptr, "s.png" } }, {}, {}, result, error))
+        << error;
+    EXPECT_EQ(result.report.find("s.png (32x32)\n"), 0u) << result.report;
+
+    result = MethodResult();
+    MethodOptions transfer = find_method("transfer")->defaults();
+    ASSERT_TRUE(transfer.set("iterations", "1", error));
+    ASSERT_TRUE(run_method(*find_method("transfer"), transfer,
+        { { &image, nullptr, "photo.png" }, { &image, nullptr, "rust.png" } }, {}, {}, result,
+        error))
+        << error;
+    EXPECT_EQ(result.image.spec().get_string_attribute("synth:image"), "photo.png");
+    EXPECT_EQ(result.image.spec().get_string_attribute("synth:sample"), "rust.png");
+}
