@@ -43,4 +43,6 @@ while IFS= read -r cmd; do
   count=$((count + 1))
 done < commands.txt
 echo "$count commands from $(basename "$doc") ran"
-[ "$count" -gt 0 ]
+# A page with sh blocks must yield commands (else the extraction broke); pages without any
+# (the generated option tables) pass with none.
+if grep -q '^```sh' "$doc"; then [ "$count" -gt 0 ]; fi
