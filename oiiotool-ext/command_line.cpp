@@ -151,7 +151,9 @@ MethodOptions command_options(const std::string& name, const Method& m,
         std::error_code ec;
         if (f.type == OptionType::InputFile) {
             if (!std::filesystem::is_regular_file(file, ec))
-                throw CliError(name + " : " + option_error(f.name, file, "no such file"));
+                throw CliError(name + " : "
+                    + option_error(f.name, file,
+                        std::filesystem::exists(file, ec) ? "not a regular file" : "no such file"));
             inputs.push_back(file);
         } else if (f.type == OptionType::OutputFile) {
             side_outputs.emplace_back(f.name, file);

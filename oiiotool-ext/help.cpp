@@ -11,10 +11,13 @@ namespace texsyn::cli {
 
 namespace {
 
-// `text` wrapped to lines of at most `width` characters, each starting with `indent`.
-void print_wrapped(const std::string& text, const char* indent, size_t width)
+// `text` wrapped to lines of at most `width` characters, the first starting with `first`,
+// the others with `indent`.
+void print_wrapped(
+    const std::string& text, const std::string& first, const char* indent, size_t width = 56)
 {
     std::string line;
+    const char* lead = first.c_str();
     size_t start = 0;
     while (start < text.size()) {
         size_t end = text.find(' ', start);
@@ -22,14 +25,15 @@ void print_wrapped(const std::string& text, const char* indent, size_t width)
             end = text.size();
         const std::string word = text.substr(start, end - start);
         if (!line.empty() && line.size() + 1 + word.size() > width) {
-            std::printf("%s%s\n", indent, line.c_str());
+            std::printf("%s%s\n", lead, line.c_str());
+            lead = indent;
             line.clear();
         }
         line += (line.empty() ? "" : " ") + word;
         start = end + 1;
     }
     if (!line.empty())
-        std::printf("%s%s\n", indent, line.c_str());
+        std::printf("%s%s\n", lead, line.c_str());
 }
 
 void print_method(const Method& m)
@@ -37,15 +41,18 @@ void print_method(const Method& m)
     const MethodOptions defaults = m.defaults();
     const auto& fields = defaults.table().fields();
     std::printf("    --%s%s\n", m.name.c_str(), fields.empty() ? "" : "[:name=value...]");
-    print_wrapped(m.help, "                          ", 56);
+    const char* indent = "                          ";
+    print_wrapped(m.help, indent, indent);
     if (fields.empty())
         return;
     std::printf("                          Options (docs/options-%s.md):\n", m.name.c_str());
     for (const OptionField& f : fields) {
-        std::printf("        %-13s %s\n", f.name.c_str(), f.help.c_str());
+        char name[32];
+        std::snprintf(name, sizeof(name), "        %-13s ", f.name.c_str());
         const std::string value = defaults.value(f.name);
-        std::printf("        %-13s (%s; default %s)\n", "", f.allowed.c_str(),
-            value.empty() ? "none" : value.c_str());
+        print_wrapped(
+            f.help + " (" + f.allowed + "; default " + (value.empty() ? "none" : value) + ")", name,
+            "                      ", 70);
     }
 }
 

@@ -2,23 +2,19 @@
 // The cascade's options: table and validation.
 #include <texsyn/cascade.h>
 
+#include "methods/common_options_pvt.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace texsyn {
-
-namespace {
-constexpr int kMaxSide = 65536;
-constexpr int kMaxLevels = 12;
-constexpr int kMaxIterations = 100;
-constexpr size_t kMaxRampStops = 64;
-} // namespace
 
 const OptionTable<CascadeOptions>& CascadeOptions::table()
 {
     return declared_table<CascadeOptions>([](OptionTable<CascadeOptions>& t) {
         using O = CascadeOptions;
         using K = CascadeKernel;
+        constexpr size_t max_levels = 12;
         // Looks found by trying; each sets every option that matters to it, and options
         // after it override (docs/cascade.md shows them).
         t.preset("preset",
@@ -42,23 +38,24 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
                     "iterations=6:ramp=0.2,0.1,0.05,0.7,0.5,0.35" } },
             "a named look (cells, blotches, fibres, bands, caustics, stone) setting the "
             "options below; options after it override it");
-        t.size("size", &O::width, &O::height, kMaxSide, "512x512, or the input image's size",
+        t.size("size", &O::width, &O::height, detail::max_image_side,
+            "512x512, or the input image's size",
             "output size WxH (default: 512x512 for a generator, the input image's size for a "
             "transfer)");
-        t.integer("levels", &O::levels, 1, kMaxLevels,
+        t.integer("levels", &O::levels, 1, int(max_levels),
             "cascade levels, coarsest first; each doubles the size (1 = a single level)");
-        t.integers("iterations", &O::iterations, 1, kMaxIterations, size_t(kMaxLevels),
+        t.integers("iterations", &O::iterations, 1, 100, max_levels,
             "iterations of A <- p(N(A)) per level, coarsest first (a missing level repeats the "
             "last value)");
         t.choices("map", &O::map,
             { { "logistic", CascadeMap::Logistic }, { "sine", CascadeMap::Sine },
                 { "tent", CascadeMap::Tent }, { "cubic", CascadeMap::Cubic },
                 { "curve", CascadeMap::Curve } },
-            size_t(kMaxLevels),
+            max_levels,
             "the pointwise map p per level, coarsest first: logistic r x(1-x), sine r/4 sin(pi x), "
             "tent r/4 (1-|2x-1|), "
             "cubic (peak r/4), or curve (piecewise linear through `curve`)");
-        t.numbers("r", &O::r, 0.0f, 4.0f, size_t(kMaxLevels), "none",
+        t.numbers("r", &O::r, 0.0f, 4.0f, max_levels, "none",
             "the map's parameter per level, coarsest first: its peak value is r/4");
         t.numbers("curve", &O::curve, 0.0f, 1.0f, 64, "none",
             "map=curve: x0,y0,x1,y1,... with x increasing (at least 2 points)");
@@ -67,16 +64,16 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
                 { "gauss3", K::Gauss3 }, { "gauss5", K::Gauss5 }, { "gauss7", K::Gauss7 },
                 { "dog5", K::Dog5 }, { "dog7", K::Dog7 }, { "aniso5", K::Aniso5 },
                 { "aniso7", K::Aniso7 }, { "custom", K::Custom } },
-            size_t(kMaxLevels),
+            max_levels,
             "the convolution N per level, coarsest first: box, Gaussian (sigma size/4), dog "
             "(Mexican hat), aniso "
             "(Gaussian stretched along `angle`) of side 3, 5 or 7, or custom (`weights`)");
-        t.numbers("angle", &O::angle, -360.0f, 360.0f, size_t(kMaxLevels), "none",
+        t.numbers("angle", &O::angle, -360.0f, 360.0f, max_levels, "none",
             "aniso kernels: direction in degrees, per level, coarsest first");
         t.odd_integer("ksize", &O::ksize, 1, 7, "kernel=custom: side of the kernel");
         t.numbers("weights", &O::weights, -100.0f, 100.0f, 49, "none",
             "kernel=custom: ksize x ksize weights, row by row (normalised to sum 1)");
-        t.numbers("noise", &O::noise, 0.0f, 1.0f, size_t(kMaxLevels), "none",
+        t.numbers("noise", &O::noise, 0.0f, 1.0f, max_levels, "none",
             "per level after the first, coarsest first: weight of fresh noise mixed into the "
             "upsampled previous level");
         t.real("dmin", &O::dmin, 0.0f, 16.0f, "kernel dilation where the control image is 0");
@@ -86,7 +83,7 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
                 { "channels", CascadeTransfer::Channels } },
             "with an input image: its luminance or each of its channels is the initial "
             "lattice");
-        t.numbers("ramp", &O::ramp, 0.0f, 1000.0f, kMaxRampStops * 3, "none",
+        t.numbers("ramp", &O::ramp, 0.0f, 1000.0f, 3 * 64, "none",
             "colour ramp: r,g,b triples (scene-linear), evenly spaced from value 0 to 1 "
             "(default: the grey lattice, one channel)");
     });

@@ -10,23 +10,17 @@
 
 namespace texsyn {
 
-namespace {
-constexpr int kMaxSide = 65536; // per side of the output; memory refuses far less anyway
-constexpr int kMaxLevels = 8;
-constexpr int kMaxIterations = 64;
-constexpr int kMaxDims = 4096;
-} // namespace
-
 const OptionTable<ChoosyOptions>& ChoosyOptions::table()
 {
     return declared_table<ChoosyOptions>([](OptionTable<ChoosyOptions>& t) {
         using O = ChoosyOptions;
-        detail::add_output_size(t, kMaxSide,
+        constexpr int max_levels = 8;
+        detail::add_output_size(t,
             "output size WxH, each side a multiple of 2^(levels-1) (default: the sample's size, "
             "cropped to one)");
         detail::add_levels(
-            t, kMaxLevels, "Gaussian/Laplacian pyramid levels, synthesized coarse to fine");
-        t.integers("iterations", &O::iterations, 1, kMaxIterations, kMaxLevels,
+            t, max_levels, "Gaussian/Laplacian pyramid levels, synthesized coarse to fine");
+        t.integers("iterations", &O::iterations, 1, 64, max_levels,
             "choosy passes per level, finest first (one value = every level; coarser levels "
             "missing from the list repeat the last: 1,8 is the paper's Fig. 10(c))");
         t.real("penalty", &O::penalty, 0.0f, 16.0f,
@@ -39,7 +33,7 @@ const OptionTable<ChoosyOptions>& ChoosyOptions::table()
             { { "exhaustive", ChoosySearch::Exhaustive }, { "kdtree", ChoosySearch::KdTree } },
             "exhaustive (every neighbourhood, full dimension, exact) or kdtree (principal "
             "components in a set of dynamic kd-trees, one per use count)");
-        t.integer("dims", &O::dims, 1, kMaxDims,
+        t.integer("dims", &O::dims, 1, 4096,
             "kdtree: principal components kept (24 x channels or more = all: exact)");
         detail::add_kdtree_eps(t);
     });

@@ -6,11 +6,15 @@
 
 namespace texsyn::detail {
 
+/// The largest side of an output image (memory refuses far less anyway).
+constexpr int max_image_side = 65536;
+
 /// "size": the output's WxH, 1..max_side each, 0x0 = the sample's size. T has int members
 /// width and height.
 template <class T>
-void add_output_size(OptionTable<T>& t, int max_side,
-    const char* help = "output size WxH (default: the sample's size)")
+void add_output_size(OptionTable<T>& t,
+    const char* help = "output size WxH (default: the sample's size)",
+    int max_side = max_image_side)
 {
     t.size("size", &T::width, &T::height, max_side, "the sample's size", help);
 }

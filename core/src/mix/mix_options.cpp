@@ -8,31 +8,26 @@
 
 namespace texsyn {
 
-namespace {
-
-// Largest number of samples a mix takes (weights=, and the range of the indices).
-constexpr int kMaxSamples = 16;
-} // namespace
-
 const OptionTable<MixOptions>& MixOptions::table()
 {
     return declared_table<MixOptions>([](OptionTable<MixOptions>& t) {
         using O = MixOptions;
+        constexpr int max_samples = 16; // weights=, and the range of the indices
         t.include(&O::synthesis, PyramidOptions::table(),
             { { "size", "output size WxH (default: the first sample's size)" },
                 { "scales",
                     "pyramid scales, the same for every sample; 0 = the most that keeps the "
                     "coarsest band of every sample and of the output >= 8 px" } });
-        t.optional_integer("palette", &O::palette, 0, kMaxSamples - 1,
+        t.optional_integer("palette", &O::palette, 0, max_samples - 1,
             "the sample giving the colour: PCA colour transform, pixel and channel histograms "
             "(with pattern=, or with split= where it defaults to 0)");
-        t.optional_integer("pattern", &O::pattern, 0, kMaxSamples - 1,
+        t.optional_integer("pattern", &O::pattern, 0, max_samples - 1,
             "the sample giving the pattern: subband histograms, each colour component in the "
             "sample's own basis (paired with the palette's by rank)");
         t.optional_integer("split", &O::split, 1, 16,
             "two samples: scales >= split and the low-pass come from sample 0, the high-pass "
             "and scales < split from sample 1 (laplacian: levels)");
-        t.numbers("weights", &O::weights, 0.0f, 1000.0f, size_t(kMaxSamples), "none",
+        t.numbers("weights", &O::weights, 0.0f, 1000.0f, size_t(max_samples), "none",
             "one weight per sample, normalised to sum 1: every histogram is the weighted "
             "Wasserstein barycentre (average quantile function) of the samples'");
     });

@@ -9,23 +9,19 @@
 
 namespace texsyn {
 
-namespace {
-constexpr int kMaxSide = 65536; // per side of the output; memory refuses far less anyway
-constexpr int kMaxN = 63;       // widest neighbourhood (63x63: ~2000 pixels per vector)
-constexpr int kMaxLevels = 8;
-} // namespace
-
 const OptionTable<NeighborhoodOptions>& NeighborhoodOptions::table()
 {
     return declared_table<NeighborhoodOptions>([](OptionTable<NeighborhoodOptions>& t) {
         using O = NeighborhoodOptions;
-        detail::add_output_size(t, kMaxSide);
-        detail::add_levels(t, kMaxLevels,
+        constexpr int max_levels = 8;
+        constexpr int max_n = 63; // the widest neighbourhood, ~2000 pixels per vector
+        detail::add_output_size(t);
+        detail::add_levels(t, max_levels,
             "Gaussian pyramid levels, synthesized coarse to fine (1 = single resolution)");
-        t.odd_integers("n", &O::n, 3, kMaxN, kMaxLevels,
+        t.odd_integers("n", &O::n, 3, max_n, max_levels,
             "neighbourhood width per level, odd, finest first (one value = every level; "
             "coarser levels missing from the list repeat the last)");
-        t.odd_integer("coarse", &O::coarse, 1, kMaxN,
+        t.odd_integer("coarse", &O::coarse, 1, max_n,
             "side of the full square taken around the parent at the next coarser level");
         t.choice("search", &O::search,
             { { "exhaustive", SearchMethod::Exhaustive }, { "tsvq", SearchMethod::Tsvq },

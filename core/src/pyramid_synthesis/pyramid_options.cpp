@@ -4,13 +4,11 @@
 
 namespace texsyn {
 
-namespace { } // namespace
-
 const OptionTable<PyramidOptions>& PyramidOptions::table()
 {
     return declared_table<PyramidOptions>([](OptionTable<PyramidOptions>& t) {
         using O = PyramidOptions;
-        detail::add_output_size(t, 1 << 20);
+        detail::add_output_size(t, "output size WxH (default: the sample's size)", 1 << 20);
         detail::add_iterations_option(t);
         t.choice("pyramid", &O::pyramid,
             { { "steerable", PyramidKind::Steerable }, { "laplacian", PyramidKind::Laplacian } },

@@ -67,16 +67,13 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
                                                        : colors->resolve(recipe.tocolorspace);
     std::vector<std::string> spaces = recipe.iscolorspace;
     spaces.resize(recipe.samples.size(), spaces.size() == 1 ? spaces[0] : "");
-    for (auto [key, name] : { std::pair { "tocolorspace", &recipe.tocolorspace } })
-        if (!name->empty() && colors->resolve(*name).empty()) {
-            error = option_error(key, *name,
-                "unknown colour space (known: "
-                    + OIIO::Strutil::join(colors->colorspace_names(), ", ") + ")");
-            return false;
-        }
+    std::vector<std::pair<const char*, std::string>> named
+        = { { "tocolorspace", recipe.tocolorspace } };
     for (const std::string& space : spaces)
+        named.emplace_back("iscolorspace", space);
+    for (const auto& [key, space] : named)
         if (!space.empty() && colors->resolve(space).empty()) {
-            error = option_error("iscolorspace", space,
+            error = option_error(key, space,
                 "unknown colour space (known: "
                     + OIIO::Strutil::join(colors->colorspace_names(), ", ") + ")");
             return false;

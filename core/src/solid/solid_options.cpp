@@ -5,22 +5,16 @@
 
 namespace texsyn {
 
-namespace {
-constexpr int kMaxSide = 16384; // per side of the block; memory refuses far less anyway
-}
-
 const char* solid_pyramid_name(SolidPyramid kind)
 {
     return kind == SolidPyramid::Laplacian ? "laplacian" : "combined";
 }
 
-namespace { } // namespace
-
 const OptionTable<SolidOptions>& SolidOptions::table()
 {
     return declared_table<SolidOptions>([](OptionTable<SolidOptions>& t) {
         using O = SolidOptions;
-        t.size3("size", &O::width, &O::height, &O::depth, kMaxSide,
+        t.size3("size", &O::width, &O::height, &O::depth, 16384, // memory refuses far less
             "the sample's width x height x the smaller of them",
             "block size WxHxD in voxels (default: the sample's width and height, and the "
             "smaller of them as depth)");
