@@ -279,7 +279,9 @@ TEST_F(Cli, EveryCommandReportsARangeErrorTheSameWay)
         const texsyn::MethodOptions defaults = m->defaults();
         const texsyn::OptionField* f = nullptr;
         for (const texsyn::OptionField& field : defaults.table().fields())
-            if (!f && field.type == texsyn::OptionType::Integer)
+            if (!f
+                && (field.type == texsyn::OptionType::Integer
+                    || field.type == texsyn::OptionType::Real))
                 f = &field;
         if (!f) // --check takes no options
             continue;
@@ -291,10 +293,14 @@ TEST_F(Cli, EveryCommandReportsARangeErrorTheSameWay)
         const std::string out = m->output == texsyn::MethodOutput::Volume ? "out.vdb"
             : m->output == texsyn::MethodOutput::Analysis                 ? "out.tsa"
                                                                           : "out.exr";
-        const std::string value = std::to_string(int64_t(f->hi) + 1);
+        const bool integer = f->type == texsyn::OptionType::Integer;
+        auto number = [&](double x) {
+            return integer ? std::to_string(int64_t(x)) : texsyn::format_number_list({ float(x) });
+        };
+        const std::string value = number(f->hi + 1.0);
         expect_failure(inputs + "--" + m->name + ":" + f->name + "=" + value + " -o " + out,
             "texsyn ERROR: --" + m->name + " : " + f->name + "=" + value + " : out of range "
-                + std::to_string(int64_t(f->lo)) + ".." + std::to_string(int64_t(f->hi)));
+                + number(f->lo) + ".." + number(f->hi));
         ++commands;
     }
     EXPECT_EQ(commands, int(texsyn::methods().size()) - 1);

@@ -170,7 +170,7 @@ using MethodRun = std::function<bool(const MethodOptions& options,
 /// it takes and gives, its options and run, its doc page and texts, then the optional
 /// members.
 struct Method {
-    std::string name; ///< "pyramid": --pyramid, "method": "pyramid", texsyn.pyramid
+    std::string name; ///< "pyramid": the command --pyramid, a recipe's "method": "pyramid"
     MethodInputs inputs = MethodInputs::Image;
     MethodOutput output = MethodOutput::Image;
     /// The options with their defaults.
