@@ -46,10 +46,20 @@ bool volume_from_imagebuf(const OIIO::ImageBuf& src, PlanarVolume& dst, std::str
         return false;
     }
     const size_t n = size_t(w) * size_t(h) * size_t(d);
-    std::vector<float> voxels(n * size_t(nc));
-    if (!src.get_pixels(src.roi(), OIIO::TypeFloat, voxels.data())) {
-        error = src.geterror();
-        return false;
+    // A local float buffer (what solid_synthesize makes) is read in place; anything else
+    // through a float copy.
+    std::vector<float> copy;
+    const float* voxels = spec.format == OIIO::TypeFloat && src.localpixels()
+            && src.pixel_stride() == OIIO::stride_t(nc * sizeof(float))
+        ? static_cast<const float*>(src.localpixels())
+        : nullptr;
+    if (!voxels) {
+        copy.resize(n * size_t(nc));
+        if (!src.get_pixels(src.roi(), OIIO::TypeFloat, copy.data())) {
+            error = src.geterror();
+            return false;
+        }
+        voxels = copy.data();
     }
     const int alpha = spec.alpha_channel > 0 ? spec.alpha_channel : -1;
     const bool divide = alpha >= 0 && !spec.get_int_attribute("oiio:UnassociatedAlpha", 0);
@@ -59,7 +69,7 @@ bool volume_from_imagebuf(const OIIO::ImageBuf& src, PlanarVolume& dst, std::str
     for (int c = 0; c < nc; ++c)
         v.channels.emplace_back(w, h, d);
     for (size_t i = 0; i < n; ++i) {
-        const float* px = &voxels[i * size_t(nc)];
+        const float* px = voxels + i * size_t(nc);
         const float a = alpha >= 0 ? px[alpha] : 1.0f;
         for (int c = 0; c < nc; ++c) {
             const float x = px[c];
