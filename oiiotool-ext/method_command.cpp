@@ -98,7 +98,7 @@ void write_option_file(CliState& state, const std::string& command, const std::s
         ok = write_image_atomic(image, state.outputs.add(file), OIIO::TypeFloat, error);
     }
     if (!ok)
-        throw CliError(command + " : " + option + "=" + file + " : could not write it");
+        throw CliError(command + " : " + option + "=" + error); // error: "<file>: cannot …"
 }
 
 } // namespace

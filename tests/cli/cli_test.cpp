@@ -783,6 +783,11 @@ TEST_F(Cli, MixAndTransferTakeAnalysisFiles)
         "texsyn ERROR: --mix : sample 1: scales=2 : differs from the analysis (scales=3) "
         "(sample 0 = stucco.png, sample 1 = rust.tsa)",
         { "stucco.png", "rust.png", "rust.tsa", "a.exr", "b.exr", "b.texsyn", "c.exr", "d.exr" });
+    // An analysis keeps no pixels to flatten.
+    expect_failure("stucco.png rust.tsa --transfer:flatten=1:scales=3 -o e.exr",
+        "texsyn ERROR: --transfer : flatten=1 : needs a sample, and rust.tsa is an analysis "
+        "(flatten when analysing: --analyze:flatten=1) (image = stucco.png, sample = rust.tsa)",
+        { "stucco.png", "rust.png", "rust.tsa", "a.exr", "b.exr", "b.texsyn", "c.exr", "d.exr" });
 }
 
 TEST_F(Cli, BadMixAndTransferInputIsRefused)

@@ -386,10 +386,29 @@ TEST(Cascade, PaletteGivesTheImagesColours)
         ASSERT_EQ(out.channels[0].data()[i], 0.4f);
         ASSERT_EQ(out.channels[2].data()[i], 0.1f);
     }
+    // It replaces a ramp (a preset's, say).
     opt.ramp = { 0, 0, 0, 1, 1, 1 };
+    EXPECT_EQ(pixel_hash(cascade_synthesize(opt, nullptr, nullptr, nullptr, &palette)),
+        pixel_hash(cascade_synthesize(options(32, 32), nullptr, nullptr, nullptr, &palette)));
+    // A palette colours one lattice.
+    OIIO::ImageBuf rgb;
+    imagebuf_from_planes(flat, rgb, false);
+    opt.transfer = CascadeTransfer::Channels;
     OIIO::ImageBuf dst;
-    EXPECT_FALSE(cascade_synthesize(dst, opt, nullptr, nullptr, nullptr, &palette));
-    EXPECT_NE(dst.geterror().find("palette"), std::string::npos);
+    EXPECT_FALSE(cascade_synthesize(dst, opt, &rgb, nullptr, nullptr, &palette));
+    EXPECT_EQ(
+        dst.geterror(), "a palette image colours one lattice; with transfer=channels there are 3");
+}
+
+// A transfer's size is checked against memory before its image is resized to it.
+TEST(Cascade, AHugeTransferIsRefusedBeforeAllocating)
+{
+    OIIO::ImageBuf image(OIIO::ImageSpec(32, 32, 3, OIIO::TypeFloat));
+    OIIO::ImageBufAlgo::fill(image, { 0.5f, 0.4f, 0.3f });
+    CascadeOptions opt = options(65536, 65536);
+    OIIO::ImageBuf dst;
+    EXPECT_FALSE(cascade_synthesize(dst, opt, &image));
+    EXPECT_EQ(dst.geterror().find("size=65536x65536 would need about "), 0u) << dst.geterror();
 }
 
 // Every operator option can change from level to level: map=, kernel= and angle= lists.

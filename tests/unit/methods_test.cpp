@@ -2,7 +2,9 @@
 // The method registry: every row is complete and consistent, option ranges are enforced
 // through one path with one message shape, and run_method checks what every front end
 // hands it.
+#include <texsyn/choosy.h>
 #include <texsyn/methods.h>
+#include <texsyn/pyramid_synthesis.h>
 
 #include <filesystem>
 #include <set>
@@ -58,8 +60,9 @@ TEST(Methods, EveryRowIsComplete)
         // The defaults are a working synthesis; a mix's mode must be chosen.
         EXPECT_EQ(defaults.validate(error), m->name != "mix") << error;
         EXPECT_EQ(m->inputs == MethodInputs::Samples, bool(m->count));
-        if (m->count)
+        if (m->count) {
             EXPECT_GE(m->count(defaults), 2);
+        }
         std::set<std::string> options;
         for (const OptionField& f : defaults.table().fields()) {
             EXPECT_TRUE(options.insert(f.name).second) << "option " << f.name << " twice";
@@ -125,6 +128,14 @@ TEST(Methods, OptionsAreValues)
     EXPECT_EQ(b.format().find("size=0x0:levels=3:iterations=1,8:"), 0u) << b.format();
     EXPECT_EQ(b.format().find("map="), std::string::npos); // file options are not options text
     EXPECT_TRUE(MethodOptions().format().empty());
+
+    // The method's struct is reachable through a row that adds file options (map=).
+    ChoosyOptions* choosy = b.get<ChoosyOptions>();
+    ASSERT_NE(choosy, nullptr);
+    EXPECT_EQ(std::to_string(choosy->levels), b.value("levels"));
+    choosy->levels = 5;
+    EXPECT_EQ(b.value("levels"), "5");
+    EXPECT_EQ(b.get<PyramidOptions>(), nullptr);
 }
 
 TEST(Methods, InputsAreCountedFromTheRowAndTheOptions)

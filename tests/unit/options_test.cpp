@@ -54,6 +54,13 @@ TEST(Options, RejectsMalformedValuesWithoutChangingTheStruct)
     EXPECT_EQ(error, "orientations=99 : out of range 1..8");
     EXPECT_FALSE(t.set(opt, "iterations", "5x", error));
     EXPECT_EQ(error, "iterations=5x : not an integer");
+    // Numbers too large for their type are out of range, not malformed.
+    EXPECT_FALSE(t.set(opt, "iterations", "99999999999999999999999", error));
+    EXPECT_EQ(error, "iterations=99999999999999999999999 : out of range 0..100");
+    EXPECT_FALSE(t.set(opt, "size", "99999999999x8", error));
+    EXPECT_EQ(error, "size=99999999999x8 : out of range 1..1048576 (each side)");
+    EXPECT_FALSE(t.set(opt, "gain", "1e99", error));
+    EXPECT_EQ(error, "gain=1e99 : out of range 0..16");
     EXPECT_FALSE(t.set(opt, "pyramid", "gaussian", error));
     EXPECT_EQ(error, "pyramid=gaussian : not one of steerable|laplacian");
     EXPECT_FALSE(t.set(opt, "levels", "3", error));

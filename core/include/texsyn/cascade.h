@@ -94,13 +94,14 @@ struct CascadeOptions {
 /// dmin + c (dmax - dmin) pixels at each pixel, sampled bilinearly; dilation 1 everywhere
 /// is exactly the undilated operator. With `rotation` (a one-channel control image, values
 /// clamped to [0, 1]) the taps are also turned by c turns (c x 360 degrees) at each pixel.
-/// The result is the last level, mapped through `ramp` if given, or through `palette` (an
-/// image, e.g. a texture sample in scene-linear): value v takes the colour of the palette
-/// pixel of rank v among its pixels sorted by luminance, so a procedural pattern wears the
-/// sample's colours.
+/// The result is the last level, mapped through `palette` if given (an image, e.g. a
+/// texture sample in scene-linear: value v takes the colour of the palette pixel of rank v
+/// among its pixels sorted by luminance, so a procedural pattern wears the sample's
+/// colours; it replaces `ramp`, e.g. a preset's), else through `ramp` if given.
 /// Fails (false, message in dst) on invalid options, an input image with an error or
-/// NaN/Inf, a control image with more than one channel, both `ramp` and `palette`, or an
-/// output that would need more memory than the machine has.
+/// NaN/Inf, a control image with more than one channel, a ramp or palette with
+/// transfer=channels of several channels, or an output that would need more memory than
+/// the machine has (checked before the input is resized or anything else allocated).
 bool cascade_synthesize(OIIO::ImageBuf& dst, const CascadeOptions& opt,
     const OIIO::ImageBuf* initial = nullptr, const OIIO::ImageBuf* dilation = nullptr,
     const OIIO::ImageBuf* rotation = nullptr, const OIIO::ImageBuf* palette = nullptr);

@@ -21,6 +21,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <typeinfo>
 #include <utility>
 #include <vector>
@@ -66,18 +67,18 @@ public:
     /// The struct's validate(): every range and the rules between options.
     bool validate(std::string& error) const;
 
-    /// The options struct if it is a T, else null.
+    /// The options struct if it is a T, or if it wraps a T (a row whose options add file
+    /// options, e.g. map=, holds a struct whose member `options` is the method's struct:
+    /// get<NeighborhoodOptions>() finds it), else null.
     template <class T>
     const T* get() const
     {
-        return m_holder && m_holder->type() == typeid(T) ? static_cast<const T*>(m_holder->data())
-                                                         : nullptr;
+        return m_holder ? static_cast<const T*>(m_holder->find(typeid(T))) : nullptr;
     }
     template <class T>
     T* get()
     {
-        return m_holder && m_holder->type() == typeid(T) ? static_cast<T*>(m_holder->data())
-                                                         : nullptr;
+        return m_holder ? static_cast<T*>(const_cast<void*>(m_holder->find(typeid(T)))) : nullptr;
     }
 
 private:
@@ -88,7 +89,24 @@ private:
         virtual const void* data() const = 0;
         virtual const OptionList& table() const = 0;
         virtual bool validate(std::string& error) const = 0;
-        virtual const std::type_info& type() const = 0;
+        virtual const void* find(const std::type_info& type) const = 0;
+    };
+    // The address of the `type` in `value`: value itself, or its member `options` (and so on
+    // down) if it has one; null if none is a `type`.
+    template <class T, class = void>
+    struct Unwrap {
+        static const void* find(const T& value, const std::type_info& type)
+        {
+            return typeid(T) == type ? &value : nullptr;
+        }
+    };
+    template <class T>
+    struct Unwrap<T, std::void_t<decltype(std::declval<const T&>().options)>> {
+        static const void* find(const T& value, const std::type_info& type)
+        {
+            using Inner = std::decay_t<decltype(value.options)>;
+            return typeid(T) == type ? &value : Unwrap<Inner>::find(value.options, type);
+        }
     };
     template <class T>
     struct Holder final : Base {
@@ -104,7 +122,10 @@ private:
         const void* data() const override { return &value; }
         const OptionList& table() const override { return *options; }
         bool validate(std::string& error) const override { return value.validate(error); }
-        const std::type_info& type() const override { return typeid(T); }
+        const void* find(const std::type_info& type) const override
+        {
+            return Unwrap<T>::find(value, type);
+        }
         T value;
         const OptionTable<T>* options;
     };

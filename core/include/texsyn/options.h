@@ -57,6 +57,12 @@ struct OptionField {
     size_t max_count = 1;             ///< lists: at most this many values; sizes: 2 or 3 sides
     std::vector<std::string> choices; ///< Choice, Choices
     std::string none; ///< the text meaning "unset" or "empty" ("none"), or "" if none is
+    /// A named set of other options' values (OptionTable::preset): where options have no
+    /// order (a recipe's JSON), it is applied before them so that they override it.
+    bool preset = false;
+    /// The same option, with the same meaning, in every table that has it (the options
+    /// several methods share): what a recipe that changes its method carries over.
+    bool shared = false;
     FileUse file = FileUse::None;
     std::string extension; ///< OutputFile: the file name must end in it (".exr"), or ""
 
@@ -258,6 +264,12 @@ public:
                 },
                 text));
         }
+        return *this;
+    }
+    /// Marks the field added last as shared (OptionField::shared).
+    OptionTable& shared()
+    {
+        m_fields.back().shared = true;
         return *this;
     }
     /// The fields of `other` (a table of the same struct) named in `names`, in its order.

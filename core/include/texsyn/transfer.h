@@ -37,8 +37,8 @@ OIIO::ImageBuf transfer_synthesize(const OIIO::ImageBuf& sample, const OIIO::Ima
 
 /// The same towards an analysis of the sample (e.g. read from an analysis file): its
 /// statistics as they are, so its number of scales must suit the image (opt.pyramid,
-/// scales and orientations must agree with it, as for synthesize_from_statistics).
-/// `subbands` receives only the synthesis's subbands.
+/// scales and orientations must agree with it, as for synthesize_from_statistics; flatten=1
+/// is refused: flatten when analysing). `subbands` receives only the synthesis's subbands.
 bool transfer_synthesize(OIIO::ImageBuf& dst, const TextureStatistics& sample,
     const OIIO::ImageBuf& image, const PyramidOptions& opt,
     std::vector<NamedImage>* subbands = nullptr);

@@ -142,14 +142,10 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
         opt.height = initial ? initial->spec().height : 512;
     }
     const std::vector<Size> sizes = level_sizes(opt);
-    PlanarImage input;
-    if (initial && !planes_at(*initial, sizes[0], input, error)) {
-        dst.errorfmt("initial image: {}", error);
-        return false;
-    }
-    const size_t nlattices
-        = initial && opt.transfer == CascadeTransfer::Channels ? input.channels.size() : 1;
-    if (!opt.ramp.empty() && nlattices != 1) {
+    const size_t nlattices = initial && opt.transfer == CascadeTransfer::Channels
+        ? size_t(initial->spec().nchannels)
+        : 1;
+    if (!opt.ramp.empty() && !palette && nlattices != 1) {
         dst.errorfmt("{}",
             option_error("ramp", format_number_list(opt.ramp),
                 "colours one lattice; with transfer=channels there are "
@@ -162,21 +158,32 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
                 "the {} control image has {} channels; expected 1", what, image->spec().nchannels);
             return false;
         }
-    std::vector<float> colours = opt.ramp;
-    if (palette) {
-        if (!opt.ramp.empty() || nlattices != 1) {
-            dst.errorfmt("a palette image colours one lattice and replaces ramp=");
-            return false;
-        }
-        if (!palette_by_luminance(*palette, colours, error)) {
-            dst.errorfmt("palette: {}", error);
-            return false;
-        }
+    if (palette && nlattices != 1) {
+        dst.errorfmt(
+            "a palette image colours one lattice; with transfer=channels there are {}", nlattices);
+        return false;
     }
-    const double per_pixel = 4.0 * (3.0 * double(nlattices) + 3.0 + (colours.empty() ? 0 : 3));
-    if (!detail::check_memory(size_t(per_pixel * double(opt.width) * double(opt.height)),
+    // Checked before anything of the output's size is allocated, the input's resize to the
+    // first level included (its float copy and its planes).
+    const double per_pixel = 4.0 * (3.0 * double(nlattices) + 3.0 + (opt.ramp.empty() ? 0 : 3));
+    const double input_bytes = initial
+        ? 8.0 * double(initial->spec().nchannels) * double(sizes[0].w) * double(sizes[0].h)
+        : 0.0;
+    if (!detail::check_memory(
+            size_t(per_pixel * double(opt.width) * double(opt.height) + input_bytes),
             "size=" + std::to_string(opt.width) + "x" + std::to_string(opt.height), error)) {
         dst.errorfmt("{}", error);
+        return false;
+    }
+    PlanarImage input;
+    if (initial && !planes_at(*initial, sizes[0], input, error)) {
+        dst.errorfmt("initial image: {}", error);
+        return false;
+    }
+    // A palette replaces the ramp (a preset's, say): value v takes its colour of rank v.
+    std::vector<float> colours = opt.ramp;
+    if (palette && !palette_by_luminance(*palette, colours, error)) {
+        dst.errorfmt("palette: {}", error);
         return false;
     }
 

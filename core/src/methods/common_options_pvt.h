@@ -16,7 +16,7 @@ void add_output_size(OptionTable<T>& t,
     const char* help = "output size WxH (default: the sample's size)",
     int max_side = max_image_side)
 {
-    t.size("size", &T::width, &T::height, max_side, "the sample's size", help);
+    t.size("size", &T::width, &T::height, max_side, "the sample's size", help).shared();
 }
 
 /// "levels": the pyramid levels a coarse-to-fine method synthesizes, 1..max_levels. T has
@@ -24,7 +24,7 @@ void add_output_size(OptionTable<T>& t,
 template <class T>
 void add_levels(OptionTable<T>& t, int max_levels, const char* help)
 {
-    t.integer("levels", &T::levels, 1, max_levels, help);
+    t.integer("levels", &T::levels, 1, max_levels, help).shared();
 }
 
 /// "eps": the approximation factor of a kd-tree search, 0..100. T has a float member eps.
@@ -32,8 +32,9 @@ template <class T>
 void add_kdtree_eps(OptionTable<T>& t)
 {
     t.real("eps", &T::eps, 0.0f, 100.0f,
-        "kdtree: approximation factor (a match's squared distance in PCA space may be "
-        "(1+eps) times the nearest's; 0 = exact)");
+         "kdtree: approximation factor (a match's squared distance in PCA space may be "
+         "(1+eps) times the nearest's; 0 = exact)")
+        .shared();
 }
 
 } // namespace texsyn::detail

@@ -90,9 +90,7 @@ bool check_analyses(const std::vector<MixSample>& samples, const MixOptions& opt
             return false;
         }
         if (opt.synthesis.flatten) {
-            error = option_error("flatten", "1",
-                "needs samples, and " + sample_name(k)
-                    + " is an analysis (flatten when analysing: --analyze:flatten=1)");
+            error = detail::flatten_of_analysis_error(sample_name(k));
             return false;
         }
         if (!detail::check_against_analysis(*a, opt.synthesis, error)) {

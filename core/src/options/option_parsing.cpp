@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 
 namespace texsyn {
 
@@ -25,19 +26,25 @@ std::string range_text(double lo, double hi, bool integral)
     return format_number_list({ float(lo) }) + ".." + format_number_list({ float(hi) });
 }
 
+// A decimal integer; one too large for int64 is clamped to it (so that the range check
+// calls it out of range, not "not an integer").
 bool parse_integer(std::string_view text, int64_t& value)
 {
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return !text.empty() && ec == std::errc() && end == text.data() + text.size();
+    if (text.empty() || end != text.data() + text.size())
+        return false;
+    if (ec == std::errc::result_out_of_range)
+        value = text[0] == '-' ? INT64_MIN : INT64_MAX;
+    return ec == std::errc() || ec == std::errc::result_out_of_range;
 }
 
-// A decimal integer that fits an int.
+// A decimal integer, clamped to the range of int (no option's range reaches its ends).
 bool parse_int32(std::string_view text, int& value)
 {
     int64_t x = 0;
-    if (!parse_integer(text, x) || x < INT32_MIN || x > INT32_MAX)
+    if (!parse_integer(text, x))
         return false;
-    value = int(x);
+    value = int(std::clamp<int64_t>(x, INT32_MIN, INT32_MAX));
     return true;
 }
 
@@ -50,10 +57,16 @@ bool reported(
     return why.empty();
 }
 
+// A decimal number; one beyond float's range becomes +-inf (or 0 if too small), which the
+// range check then reports.
 bool parse_real(std::string_view text, float& value)
 {
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return !text.empty() && ec == std::errc() && end == text.data() + text.size();
+    if (text.empty() || end != text.data() + text.size())
+        return false;
+    if (ec == std::errc::result_out_of_range)
+        value = float(std::strtod(std::string(text).c_str(), nullptr));
+    return ec == std::errc() || ec == std::errc::result_out_of_range;
 }
 
 // Why `v` is not allowed ("" if it is): the reason shared by single values and list items.
@@ -417,12 +430,12 @@ OptionField size_field(std::string name, int hi, std::string zero_means, std::st
         for (size_t i = 0; i < n; ++i) {
             const size_t x = i + 1 < n ? rest.find('x') : rest.size();
             int64_t d = 0;
-            if (x == std::string_view::npos || !parse_integer(rest.substr(0, x), d) || d < 0
-                || d > INT32_MAX) {
+            if (x == std::string_view::npos || !parse_integer(rest.substr(0, x), d) || d < 0) {
                 error = option_error(name, v, "not a size (expected " + example + ")");
                 return false;
             }
-            dims.push_back(int(d));
+            dims.push_back(int(std::min<int64_t>(d, INT32_MAX))); // the limits refuse it
+
             rest.remove_prefix(std::min(rest.size(), x + 1));
         }
         if (!problem(dims, v, error))
@@ -591,6 +604,7 @@ OptionField preset_field(std::string name, std::vector<std::pair<std::string, st
     OptionField f = described(name, std::move(help), OptionType::Choice, choice_list(names));
     f.choices = names;
     f.none = "none";
+    f.preset = true;
     f.parse = [name, presets, apply, allowed = f.allowed](
                   void* t, std::string_view v, std::string& error) {
         if (v == "none")
@@ -616,9 +630,11 @@ OptionField file_field(std::string name, FileUse use, std::string extension, std
     f.extension = extension;
     auto problem
         = [name, extension](const std::string& v, std::string_view shown, std::string& error) {
-              if (extension.empty() || v.empty() || v.size() < extension.size()
-                  || std::equal(extension.rbegin(), extension.rend(), v.rbegin(),
-                      [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
+              // "" is the field's unset value; a name must hold more than the extension.
+              if (extension.empty() || v.empty()
+                  || (v.size() > extension.size()
+                      && std::equal(extension.rbegin(), extension.rend(), v.rbegin(),
+                          [](char a, char b) { return std::tolower(a) == std::tolower(b); })))
                   return true;
               error = option_error(name, shown, "name it *" + extension);
               return false;

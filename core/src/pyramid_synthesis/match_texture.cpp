@@ -49,6 +49,13 @@ std::vector<QuantileTable> adjusted_bands(
 
 } // namespace
 
+std::string detail::flatten_of_analysis_error(const std::string& name)
+{
+    return option_error("flatten", "1",
+        "needs a sample, and " + name
+            + " is an analysis (flatten when analysing: --analyze:flatten=1)");
+}
+
 bool detail::check_against_analysis(
     const TextureStatistics& stats, const PyramidOptions& opt, std::string& error)
 {

@@ -17,9 +17,7 @@ bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, c
     std::vector<NamedImage>* subbands = settings.subbands ? &result.subbands : nullptr;
     const MethodInput& sample = inputs[0];
     if (sample.analysis && opt.flatten) { // an analysis keeps no pixels to divide
-        error = option_error("flatten", "1",
-            "needs a sample, and " + sample.name
-                + " is an analysis (flatten when analysing: --analyze:flatten=1)");
+        error = flatten_of_analysis_error(sample.name);
         return false;
     }
     const bool ok = sample.analysis

@@ -28,6 +28,10 @@ void append_subbands(const std::string& prefix, const std::vector<std::string>& 
     const std::vector<std::vector<Plane>>& per_component,
     const std::vector<std::string>& component_names, std::vector<NamedImage>& out);
 
+/// "flatten=1 : needs a sample, and <name> is an analysis (…)": an analysis keeps no pixels
+/// to divide a lighting gradient out of.
+std::string flatten_of_analysis_error(const std::string& name);
+
 /// False (with "<option>=… : differs from the analysis (…)") unless opt's pyramid, scales
 /// (0 = any) and orientations agree with the analysis `stats`, and its gain and balance
 /// lists fit its scales.
@@ -60,23 +64,26 @@ template <class T>
 void add_iterations_option(OptionTable<T>& t)
 {
     t.integer("iterations", &T::iterations, 0, 100,
-        "match-texture iterations (Heeger & Bergen §3.3: about 5)");
+         "match-texture iterations (Heeger & Bergen §3.3: about 5)")
+        .shared();
 }
 /// "scales" (0 = automatic) and "orientations": T has int members scales and orientations.
 template <class T>
 void add_scale_options(OptionTable<T>& t, const char* scales_help, const char* orientations_help)
 {
-    t.integer("scales", &T::scales, 0, 16, scales_help);
-    t.integer("orientations", &T::orientations, 1, 8, orientations_help);
+    t.integer("scales", &T::scales, 0, 16, scales_help).shared();
+    t.integer("orientations", &T::orientations, 1, 8, orientations_help).shared();
 }
 template <class T>
 void add_matching_options(OptionTable<T>& t)
 {
     t.choice("histogram", &T::histogram,
-        { { "exact", HistogramMode::Exact }, { "bins256", HistogramMode::Bins256 } },
-        "histogram matching: exact quantiles, or the paper's 256-bin cdf");
+         { { "exact", HistogramMode::Exact }, { "bins256", HistogramMode::Bins256 } },
+         "histogram matching: exact quantiles, or the paper's 256-bin cdf")
+        .shared();
     t.choice("fft", &T::fft, { { "kiss", FftBackend::Kiss }, { "fftw", FftBackend::Fftw } },
-        "FFT backend: kiss (built in) or fftw (only in -DTEXSYN_WITH_FFTW=ON builds)");
+         "FFT backend: kiss (built in) or fftw (only in -DTEXSYN_WITH_FFTW=ON builds)")
+        .shared();
 }
 
 } // namespace texsyn::detail

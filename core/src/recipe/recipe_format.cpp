@@ -168,12 +168,19 @@ bool set_key(Recipe& r, const std::string& key, const std::vector<std::string>& 
 using KeyValues = std::vector<std::pair<std::string, std::vector<std::string>>>;
 
 // Sets the keys of one JSON object or one REST string: `method` first, wherever it stands,
-// so that the options after it and before it are the same method's.
+// so that the options after it and before it are the same method's; then a preset (a named
+// set of other options), so that the options given override it; then the rest.
 bool set_keys(Recipe& r, const KeyValues& pairs, const std::string& base_dir, std::string& error)
 {
-    for (bool method : { true, false })
+    auto rank = [&r](const std::string& key) {
+        if (key == "method")
+            return 0;
+        const OptionField* f = r.options.table().find(key);
+        return f && f->preset ? 1 : 2;
+    };
+    for (int pass = 0; pass < 3; ++pass)
         for (const auto& [key, values] : pairs)
-            if ((key == "method") == method && !set_key(r, key, values, base_dir, error))
+            if (rank(key) == pass && !set_key(r, key, values, base_dir, error))
                 return false;
     return true;
 }
@@ -389,15 +396,18 @@ bool apply_recipe_arguments(
     for (const auto& [key, values] : pairs) {
         if (key != "method" || values.front() == r.method)
             continue;
-        // Another method: its defaults, and the options given so far that it has and takes.
+        // Another method: its defaults, and the options given so far that are the same
+        // option in both (shared: size, levels, …), not those that only share a name
+        // (a choosy recipe's iterations are not the pyramid's).
+        const OptionList& before = r.options.table(); // a static table: it outlives r.options
         if (!set_method(r, values.front(), error))
             return false;
         std::vector<std::pair<std::string, std::string>> given;
         given.swap(r.given);
         for (const auto& [k, v] : given) {
+            const OptionField *from = before.find(k), *to = r.options.table().find(k);
             std::string ignored;
-            if (const OptionField* f = r.options.table().find(k);
-                f && f->type != OptionType::OutputFile && r.options.set(k, v, ignored))
+            if (from && to && from->shared && to->shared && r.options.set(k, v, ignored))
                 r.given.emplace_back(k, v);
         }
     }

@@ -28,6 +28,10 @@ bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, c
     apply_run_settings(settings, opt);
     std::vector<NamedImage>* subbands = settings.subbands ? &result.subbands : nullptr;
     const MethodInput &image = inputs[0], &sample = inputs[1];
+    if (sample.analysis && opt.flatten) { // an analysis keeps no pixels to divide
+        error = flatten_of_analysis_error(sample.name);
+        return false;
+    }
     const bool ok = sample.analysis
         ? transfer_synthesize(result.image, *sample.analysis, *image.image, opt, subbands)
         : transfer_synthesize(result.image, *sample.image, *image.image, opt, subbands);

@@ -21,6 +21,8 @@ bool transfer(OIIO::ImageBuf& dst, const OIIO::ImageBuf* sample, const TextureSt
     };
     if (!validate_transfer_options(opt, error))
         return fail(error);
+    if (analysis && opt.flatten) // an analysis keeps no pixels to divide
+        return fail(detail::flatten_of_analysis_error("the sample"));
     const OIIO::ImageSpec& is = image.spec();
     const int nc = analysis ? analysis->nchannels() : sample->spec().nchannels;
     if (image.initialized() && is.nchannels != nc)
