@@ -13,51 +13,6 @@
 namespace texsyn::detail {
 namespace {
 
-// Vectors whose similar lists one task builds: fixed, whatever the thread count.
-constexpr size_t kListBlock = 256;
-
-// Row i: the `k` vectors most similar to vector i (full distance; i excluded), nearest
-// first, ties to the lowest index. The `k + candidates` nearest in reduced space (plus i
-// itself) are re-ranked; a set with fewer than k other vectors pads the row with i.
-// Vectors are taken in the tree's order (neighbours in space one after the other: the
-// searches share cache lines); each row depends on its vector alone.
-std::vector<uint32_t> similar_lists(
-    const KdTreeIndex& index, size_t k, size_t candidates, float eps, int nthreads)
-{
-    const VectorSet& set = index.vectors();
-    std::vector<uint32_t> lists(set.count * k);
-    if (k == 0)
-        return lists;
-    const size_t pool = k + candidates + 1;
-    const size_t blocks = (set.count + kListBlock - 1) / kListBlock;
-    OIIO::parallel_for(
-        int64_t(0), int64_t(blocks),
-        [&](int64_t b) {
-            std::vector<uint32_t> found(pool);
-            std::vector<float> reduced(pool);
-            std::vector<std::pair<float, uint32_t>> ranked;
-            const size_t end = std::min(set.count, size_t(b + 1) * kListBlock);
-            for (size_t p = size_t(b) * kListBlock; p < end; ++p) {
-                const uint32_t i = index.original(p);
-                const size_t n = index.nearest_reduced(
-                    index.point(p), pool, eps, found.data(), reduced.data());
-                ranked.clear();
-                for (size_t j = 0; j < n; ++j)
-                    if (found[j] != i)
-                        ranked.emplace_back(
-                            distance2(set.row(i), set.row(found[j]), set.dim), found[j]);
-                const size_t keep = std::min(k, ranked.size());
-                std::partial_sort(
-                    ranked.begin(), ranked.begin() + std::ptrdiff_t(keep), ranked.end());
-                uint32_t* row = lists.data() + size_t(i) * k;
-                for (size_t j = 0; j < k; ++j)
-                    row[j] = j < keep ? ranked[j].second : i;
-            }
-        },
-        OIIO::paropt(nthreads).minitems(1));
-    return lists;
-}
-
 class CoherentSearch final : public NeighborSearch {
 public:
     CoherentSearch(const VectorSet& vectors, const SearchSettings& settings)

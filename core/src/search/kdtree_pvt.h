@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -81,5 +82,16 @@ private:
     float m_eps;
     size_t m_candidates;
 };
+
+/// Row i: the `k` vectors most similar to vector i of the index's set (full distance; i
+/// itself and every j with excluded(i, j) left out), nearest first, ties to the lowest
+/// index. The `k + candidates + excluded_count` nearest in reduced space (plus i itself;
+/// `excluded_count` at most are expected to be excluded) are re-ranked; a row with fewer
+/// than k such vectors is padded with i. Vectors are taken in the tree's order (neighbours
+/// in space one after the other: the searches share cache lines); each row depends on its
+/// vector alone, so the lists do not depend on nthreads.
+std::vector<uint32_t> similar_lists(const KdTreeIndex& index, size_t k, size_t candidates,
+    float eps, int nthreads, size_t excluded_count = 0,
+    const std::function<bool(uint32_t, uint32_t)>& excluded = {});
 
 } // namespace texsyn::detail
