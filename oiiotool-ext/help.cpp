@@ -95,7 +95,11 @@ void print_help()
         "                          MAP: height, normal or roughness maps follow the colour.\n"
         "                          Written in IMAGE's colour space by default\n"
         "\n"
-        "Commands (--NAME:name=value:name=value...):\n",
+        "Commands (--NAME:name=value:name=value...). Which method for which texture\n"
+        "(docs/which-method.md): stochastic (rust, stucco) --pyramid; small structure,\n"
+        "foliage --neighborhood; structured, regular, oriented (bricks, tiles, weave,\n"
+        "wood) --patch; the sample's colour histogram kept exactly --choosy; no sample\n"
+        "--cascade.\n",
         version());
     for (const Method* m : methods())
         print_method(*m);
@@ -109,6 +113,7 @@ void print_help()
                 "    texsyn photo.png rust.png --transfer -o rusty_photo.exr\n"
                 "    texsyn grass.png --neighborhood:size=512x512:map=coords.exr -o grass_big.exr\n"
                 "    texsyn stone.png --choosy:size=512x512:iterations=1,8 -o stone_big.exr\n"
+                "    texsyn bricks.png --patch:size=1024x1024:map=coords.exr -o bricks_big.exr\n"
                 "    texsyn --apply-map coords.exr grass_height.png -o grass_height_big.exr\n"
                 "    texsyn --cascade:size=512x512:levels=4:r=3.9 -o cascade.exr\n");
 }

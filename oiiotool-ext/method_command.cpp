@@ -188,6 +188,8 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
             from += (from.empty() ? " from " : ", ") + short_name(input);
         std::fprintf(stderr, "texsyn: %s %s%s in %.2f s\n", command.c_str(), opts.c_str(),
             from.c_str(), secs);
+        if (!result.notes.empty())
+            std::fprintf(stderr, "texsyn: %s %s\n", command.c_str(), result.notes.c_str());
     }
     std::string samples;
     for (const StackItem& input : inputs)

@@ -50,6 +50,7 @@ for method, inputs, modifiers, out in [
      "out.exr"),
     ("choosy", ["stucco_yellow.png"],
      "size=16x16:levels=2:iterations=1,2:search=exhaustive:penalty=0.5", "out.exr"),
+    ("patch", ["stucco_yellow.png"], "size=24x24:patch=7,5:repetition=1", "out.exr"),
     ("solid", ["stucco_yellow.png"], "size=16x16x8:iterations=1", "out.vdb"),
     ("mix", ["stucco_yellow.png", "stucco.tsa"], "palette=0:pattern=1:size=32x32:iterations=1",
      "out.exr"),

@@ -20,6 +20,8 @@ cp "$repo/data/samples/grass.png" grass.png
 cp "$repo/data/samples/bricks.png" bricks.png
 cp "$repo/data/samples/flowers.png" flowers.png
 cp "$repo/data/samples/wood_grain.png" wood_grain.png
+cp "$repo/data/samples/tiles_green.png" tiles.png
+cp "$repo/data/samples/weave_green.png" weave.png
 cp "$repo/ocio-configs/config.ocio" studio.ocio
 oiiotool "$repo/data/samples/stucco_yellow.png" -d uint16 -o scan.tif
 mkdir -p build && ln -s "$plugins" build/plugins  # the README's build-tree plugin path

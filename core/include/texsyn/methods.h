@@ -176,6 +176,8 @@ struct MethodResult {
     /// The images of the output-file options that name a file, by option name (e.g.
     /// "map", the source map), for the front end to write.
     std::vector<std::pair<std::string, OIIO::ImageBuf>> files;
+    /// What the run measured of its result, one line (the tool prints it with -v).
+    std::string notes;
 };
 
 /// The images an input-file option names (read by read_option_files, inputs.h), by

@@ -20,6 +20,7 @@
 #include <texsyn/choosy.h>
 #include <texsyn/mix.h>
 #include <texsyn/neighborhood.h>
+#include <texsyn/patch.h>
 #include <texsyn/pyramid_synthesis.h>
 #include <texsyn/solid.h>
 #include <texsyn/transfer.h>

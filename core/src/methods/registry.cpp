@@ -16,6 +16,7 @@ const Method& mix_method();
 const Method& transfer_method();
 const Method& neighborhood_method();
 const Method& choosy_method();
+const Method& patch_method();
 const Method& cascade_method();
 const Method& analyze_method();
 const Method& check_method();
@@ -30,6 +31,7 @@ const std::vector<const Method*>& methods()
         &detail::transfer_method(),
         &detail::neighborhood_method(),
         &detail::choosy_method(),
+        &detail::patch_method(),
         &detail::cascade_method(),
         &detail::analyze_method(),
         &detail::check_method(),

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: Apache-2.0
+// The patch method: texture optimization (Kwatra et al. 2005, "Texture Optimization for
+// Example-based Synthesis") with PatchMatch nearest-neighbour fields (Barnes et al. 2009)
+// and the additions of Kaspar et al. 2015 ("Self Tuning Texture Optimization"): histogram
+// matching inside the loop, a spatial-uniformity penalty against repetition, and an
+// automatic guidance channel. For structured textures: bricks, tiles, weave, wood, flowers.
+//
+// Same conventions as synthesis.h: ImageBufAlgo-style two forms, errors in dst, scene-linear
+// float in and out, bit-identical for a seed whatever nthreads is.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <texsyn/options.h>
+#include <texsyn/source_map.h>
+
+namespace texsyn {
+
+/// How the overlapping source patches of a pixel are averaged (the "vote").
+enum class PatchVote {
+    /// Each patch weighted by its match: (distance per value + e)^-0.6, Kwatra et al.'s
+    /// robust (IRLS, r = 0.8) weights: a poorly matching patch has little say. Sharper.
+    Robust,
+    /// The plain mean of the overlapping patches (the L2 optimum).
+    Mean,
+};
+
+/// Options of the patch method.
+struct PatchOptions {
+    int width = 0; ///< output size; 0x0 = the sample's size
+    int height = 0;
+    /// Gaussian pyramid levels, synthesized coarse to fine; 0 = chosen from the sample's
+    /// feature size (the coarsest level shrinks its features to about one patch).
+    int levels = 0;
+    /// Patch sizes (odd), largest first: every level but the finest optimizes with each in
+    /// turn; the finest only refines with the last (smallest).
+    std::vector<int> patch = { 11, 7 };
+    /// EM iterations (search, then vote) per patch size, per level, finest first; one value
+    /// = every level; coarser levels missing from the list repeat the last.
+    std::vector<int> iterations = { 1, 2, 4 };
+    /// Strength of the spatial-uniformity penalty (Kaspar et al. §4.3): a source patch used
+    /// more often than an even use of the sample would use it costs repetition x its excess
+    /// use x the sample's patch variance. 0 = the plain method.
+    float repetition = 0.5f;
+    /// Weight of the automatic guidance channel (Kaspar et al. §4.2: the distance transform
+    /// of the sample's edge mask, synthesized with the colours so that patches agree on
+    /// where features lie beyond their own extent); 0 = none.
+    float guidance = 1.0f;
+    /// k of k-coherence: each propagated candidate also brings the k - 1 sample patches
+    /// most similar to it (Tong et al. 2002); 1 = PatchMatch's propagation alone.
+    int coherence = 2;
+    PatchVote vote = PatchVote::Robust;
+    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
+    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
+    /// Called with the fraction done (0..1) from the calling thread; may be empty.
+    std::function<void(float)> progress;
+
+    /// The table behind `--patch:name=value`, recipes, synth:options and the docs.
+    static const OptionTable<PatchOptions>& table();
+
+    /// Checks the options alone (ranges, odd sizes, list lengths). False with a message.
+    bool validate(std::string& error) const;
+
+    /// EM iterations at level `level` (0 finest).
+    int iterations_at(int level) const;
+};
+
+/// What a synthesis measured of its result (the tool prints it with -v).
+struct PatchReport {
+    int levels = 0;                     ///< levels synthesized (the automatic choice if levels=0)
+    int feature_size = 0;               ///< the sample's feature size in pixels (levels=0's input)
+    double used_fraction = 0.0;         ///< fraction of the sample's pixels the result copies
+    size_t largest_copy = 0;            ///< pixels of the largest region copied verbatim
+    double largest_copy_fraction = 0.0; ///< largest_copy / the sample's pixels
+};
+
+/// Bytes of memory a synthesis needs (the estimate the size check uses).
+size_t patch_memory_estimate(int sample_width, int sample_height, int nchannels, int out_width,
+    int out_height, const PatchOptions& opt);
+
+/// Texture optimization, coarse to fine.
+///
+/// Gaussian pyramids (the (1,4,6,4,1)/16 kernel) of the sample (reflected) and the output
+/// (circular), `levels` levels. Every output pixel is the centre of a toroidal patch (so the
+/// output tiles) with a source: the centre of a patch inside the sample at the same level.
+/// The coarsest level starts from seeded random sources; each finer level from its coarser
+/// level's sources, doubled. Each EM iteration searches — PatchMatch passes that read the
+/// previous field and write a new one (jump-flood propagation at steps 4, 2, 1 with
+/// k-coherence candidates, then a random search around the best at halving radii), so the
+/// field does not depend on the schedule — and then votes: each pixel the (robust) average
+/// of the overlapping source patches' pixels, whose histogram is matched to the sample
+/// level's, channel by channel. The result is a copy: each pixel takes the sample pixel, of
+/// those its overlapping patches voted for, nearest the average, so every output pixel is a
+/// sample pixel and the source map reproduces it. All channels (colour, alpha, extra
+/// channels) are part of the patches and copied; `guide` (one channel, the sample's size),
+/// if given, replaces the automatic guidance channel.
+///
+/// `dst` receives opt.width x opt.height with the sample's channels; `source_map`, if not
+/// null, the source map (source_map.h); `report`, if not null, what the result copies.
+/// Fails (false, message in dst) on invalid options, a sample with an error or NaN/Inf
+/// pixels, a sample or output smaller than the patch at any level, a guide of the wrong
+/// size or channels, or an output that would need more memory than the machine has
+/// (checked before allocating).
+bool patch_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOptions& opt,
+    OIIO::ImageBuf* source_map = nullptr, const OIIO::ImageBuf* guide = nullptr,
+    PatchReport* report = nullptr);
+OIIO::ImageBuf patch_synthesize(const OIIO::ImageBuf& sample, const PatchOptions& opt,
+    OIIO::ImageBuf* source_map = nullptr, const OIIO::ImageBuf* guide = nullptr,
+    PatchReport* report = nullptr);
+
+} // namespace texsyn

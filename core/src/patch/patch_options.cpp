@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: Apache-2.0
+// The patch method's options: table, validation, memory estimate.
+#include <texsyn/patch.h>
+
+#include <algorithm>
+
+#include "methods/common_options_pvt.h"
+
+namespace texsyn {
+
+namespace {
+
+constexpr int kMaxLevels = 8;
+
+} // namespace
+
+const OptionTable<PatchOptions>& PatchOptions::table()
+{
+    return declared_table<PatchOptions>([](OptionTable<PatchOptions>& t) {
+        using O = PatchOptions;
+        detail::add_output_size(t);
+        t.integer("levels", &O::levels, 0, kMaxLevels,
+             "Gaussian pyramid levels, synthesized coarse to fine; 0 = from the sample's "
+             "feature size (its features about one patch wide at the coarsest level)")
+            .shared();
+        t.odd_integers("patch", &O::patch, 3, 33, 4,
+            "patch sizes (odd), largest first: each level optimizes with each in turn, the "
+            "finest with the last only");
+        t.integers("iterations", &O::iterations, 1, 50, kMaxLevels,
+            "EM iterations (search, then vote) per patch size, per level, finest first (one "
+            "value = every level; coarser levels missing from the list repeat the last)");
+        t.real("repetition", &O::repetition, 0.0f, 10.0f,
+            "spatial-uniformity penalty: a source patch used more than an even use of the "
+            "sample would use it costs more (spreads the result over the whole sample); 0 = "
+            "the plain method");
+        t.real("guidance", &O::guidance, 0.0f, 10.0f,
+            "weight of the automatic guidance channel (distance to the sample's edges), "
+            "which keeps features whole; 0 = none");
+        t.integer("coherence", &O::coherence, 1, 8,
+            "k of k-coherence: each propagated candidate also brings its k-1 most similar "
+            "sample patches; 1 = PatchMatch's propagation alone");
+        t.choice("vote", &O::vote, { { "robust", PatchVote::Robust }, { "mean", PatchVote::Mean } },
+            "how overlapping patches are averaged: robust (each weighted by how well it "
+            "matches, Kwatra et al.'s IRLS weights; sharper) or mean");
+    });
+}
+
+bool PatchOptions::validate(std::string& error) const
+{
+    if (!table().check(*this, error))
+        return false;
+    if (!std::is_sorted(patch.rbegin(), patch.rend())) {
+        error = option_error("patch", format_int_list(patch), "list the sizes largest first");
+        return false;
+    }
+    return levels == 0
+        || check_level_list(
+            "iterations", format_int_list(iterations), iterations.size(), levels, error);
+}
+
+int PatchOptions::iterations_at(int level) const
+{
+    return at_level(iterations, level, 1);
+}
+
+size_t patch_memory_estimate(int sample_width, int sample_height, int nchannels, int out_width,
+    int out_height, const PatchOptions& opt)
+{
+    // With the guidance channel; the pyramids add a third.
+    const double c = double(nchannels + (opt.guidance > 0.0f ? 1 : 0));
+    const double sample = double(sample_width) * double(sample_height);
+    const double out = double(out_width) * double(out_height);
+    // The sample: its planes and interleaved pixels. The output: the vote's planes, the
+    // padded interleaved copy, the field twice (source, distance), the vote's weights and
+    // the result with its source map.
+    const double pyramid = 4.0 / 3.0;
+    const double sample_bytes = sample * c * 4.0 * 2.0 * pyramid;
+    const double out_bytes = out * (c * 4.0 * 3.0 + 8.0 * 2.0 + 8.0) * pyramid + out * 8.0;
+    // k-coherence: the patch vectors of the finest level's smallest patch or the next
+    // level's largest, and their kd-tree.
+    const double small = opt.patch.empty() ? 7.0 : double(opt.patch.back());
+    const double large = opt.patch.empty() ? 7.0 : double(opt.patch.front());
+    const double vectors = opt.coherence > 1
+        ? std::max(sample * small * small, sample / 4.0 * large * large) * c * 4.0
+            + sample * (4.0 * double(opt.coherence) + 40.0)
+        : 0.0;
+    const double bytes = sample_bytes + out_bytes + vectors;
+    return bytes > 1e18 ? size_t(1e18) : size_t(bytes);
+}
+
+} // namespace texsyn

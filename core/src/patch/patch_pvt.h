@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: Apache-2.0
+// The patch method's parts: interleaved levels, the nearest-neighbour field and its
+// PatchMatch search, the vote, the guidance channel and the copy report.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include <texsyn/histogram.h>
+#include <texsyn/image.h>
+#include <texsyn/patch.h>
+
+namespace texsyn::detail {
+
+/// An image whose channels are interleaved (pixel-major): a patch row is contiguous.
+struct PixelImage {
+    int width = 0, height = 0, channels = 0;
+    std::vector<float> data;
+
+    float* pixel(int x, int y)
+    {
+        return data.data() + (size_t(y) * size_t(width) + size_t(x)) * size_t(channels);
+    }
+    const float* pixel(int x, int y) const
+    {
+        return data.data() + (size_t(y) * size_t(width) + size_t(x)) * size_t(channels);
+    }
+};
+
+/// `planes` interleaved.
+PixelImage interleave(const std::vector<Plane>& planes, int nthreads);
+
+/// `planes` interleaved with a circular margin of `pad` pixels on every side: pixel (x, y)
+/// of the torus is at (x + pad, y + pad), so a patch centred anywhere reads no wrap.
+PixelImage interleave_padded(const std::vector<Plane>& planes, int pad, int nthreads);
+
+/// One level of the sample, as the search and the vote read it.
+struct SampleLevel {
+    PixelImage pixels;                     ///< every channel, the guidance channel last
+    std::vector<QuantileTable> histograms; ///< per channel, the targets of the vote
+    double variance = 0.0;                 ///< summed over channels: a patch value's spread
+};
+
+/// The sample level of `planes`: interleaved, each channel's histogram, the summed
+/// variance.
+SampleLevel sample_level(const std::vector<Plane>& planes, int nthreads);
+
+/// The nearest-neighbour field of one output level: per output pixel (row-major), the
+/// centre of its source patch in the sample level (y * sample width + x) and the squared
+/// distance between the two patches.
+struct PatchField {
+    int width = 0, height = 0;
+    std::vector<uint32_t> source;
+    std::vector<float> distance;
+};
+
+/// The centres a patch of half-width `half` may take in a width x height sample level.
+struct CentreRange {
+    int width = 0, height = 0, half = 0;
+    int x0() const { return half; }
+    int y0() const { return half; }
+    int x1() const { return width - 1 - half; } ///< inclusive
+    int y1() const { return height - 1 - half; }
+    bool empty() const { return x1() < x0() || y1() < y0(); }
+    size_t count() const { return empty() ? 0 : size_t(x1() - x0() + 1) * size_t(y1() - y0() + 1); }
+    /// (x, y) clamped into the range, as a sample index.
+    uint32_t clamp(int x, int y) const
+    {
+        return uint32_t(std::clamp(y, y0(), y1())) * uint32_t(width)
+            + uint32_t(std::clamp(x, x0(), x1()));
+    }
+};
+
+/// What one search (an EM iteration's) does.
+struct MatchSettings {
+    int patch = 7;                        ///< odd patch side
+    int coherence = 1;                    ///< k of k-coherence (uses `similar`)
+    float repetition = 0.0f;              ///< the spatial-uniformity penalty's strength
+    std::vector<int> steps = { 4, 2, 1 }; ///< jump-flood propagation steps, one pass each
+    int radius = 0; ///< the random search's first radius; 0 = the sample's larger side
+    uint64_t seed = 0, stream = 0;
+    int nthreads = 0;
+};
+
+/// Per sample centre (index y * width + x), its coherence - 1 most similar other centres
+/// (by the distance of the patches' every other pixel each way, ranked among a kd-tree's
+/// nearest in PCA space; centres within 2 pixels of it excluded, padded with itself),
+/// coherence - 1 entries each. Empty if coherence < 2.
+std::vector<uint32_t> similar_patches(
+    const PixelImage& sample, int patch, int coherence, int nthreads);
+
+/// The squared distance between the patch centred at output (x, y) of `padded` (an
+/// interleave_padded with pad >= patch / 2 … only patch / 2 is read around it) and the
+/// sample patch centred at `source`; stops early (returning something >= bound) once it
+/// reaches `bound`.
+float patch_distance(const PixelImage& padded, int pad, int x, int y, const PixelImage& sample,
+    uint32_t source, int patch, float bound);
+
+/// Recomputes field.distance for `padded` (the output changed), then runs the search
+/// passes of `settings`: each pass reads the previous field and writes a new one (no pixel
+/// sees another's update of the same pass), so the result does not depend on nthreads.
+/// `similar` is similar_patches' table for this patch size (or empty).
+void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
+    const std::vector<uint32_t>& similar, const MatchSettings& settings, PatchField& field);
+
+/// The vote: every output pixel the weighted average of the `patch` x `patch` source
+/// patches that overlap it (circularly), channel by channel, into `out` (planes of the
+/// field's size, sample.pixels.channels of them).
+void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVote kind,
+    int nthreads, std::vector<Plane>& out);
+
+/// Per output pixel, the sample pixel (index y * width + x) of those its overlapping patches
+/// voted for that is nearest (over every channel) to `average` (the vote's result).
+std::vector<uint32_t> nearest_votes(const SampleLevel& sample, const PatchField& field, int patch,
+    const std::vector<Plane>& average, int nthreads);
+
+/// The mean and variance of a plane's values.
+void plane_moments(const Plane& plane, double& mean, double& variance);
+
+/// `plane` shifted to zero mean and scaled to the mean standard deviation of the `colour`
+/// planes (the guidance channel's scale); a constant plane becomes zeros.
+void scale_like_colour(Plane& plane, const std::vector<Plane>& colour);
+
+/// The automatic guidance channel of a sample (its colour planes): the distance to the
+/// nearest strong edge of its luminance (gradient magnitude in the top fifth), clipped at
+/// `feature_size` and scaled to zero mean and the colour channels' mean standard
+/// deviation.
+Plane guidance_channel(const std::vector<Plane>& colour, int feature_size);
+
+/// The sample's feature size in pixels: the shortest shift, along x or y, at which the
+/// luminance's autocorrelation falls below 1/2, taking the larger of the two directions
+/// (capped at a quarter of the sample's side).
+int feature_size(const std::vector<Plane>& colour);
+
+/// The fraction of the sample's pixels that `source` (sample indices) copies, and the
+/// largest connected region of the output (circular, 4-connected) whose neighbours copy
+/// neighbouring sample pixels (a verbatim copy), in pixels.
+void copy_report(const std::vector<uint32_t>& source, int width, int height, int sample_width,
+    int sample_height, double& used_fraction, size_t& largest_copy);
+
+} // namespace texsyn::detail

@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: Apache-2.0
+// Texture optimization coarse to fine (Kwatra et al. 2005; Kaspar et al. 2015): the levels,
+// the EM loop of search and vote per patch size, and the final copy.
+#include <texsyn/patch.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <texsyn/pyramid.h>
+#include <texsyn/random.h>
+
+#include "methods/method_helpers_pvt.h"
+#include "methods/source_map_pvt.h"
+#include "patch_pvt.h"
+
+namespace texsyn {
+
+namespace {
+
+using detail::PatchField;
+using detail::SampleLevel;
+
+// The random search's first radius below the coarsest level.
+constexpr int kFineRadius = 8;
+
+std::string size_text(int w, int h)
+{
+    return std::to_string(w) + "x" + std::to_string(h);
+}
+
+// The patch sizes level `level` optimizes with: all of them, but only the smallest at the
+// finest level.
+std::vector<int> patches_at(const PatchOptions& opt, int level)
+{
+    return level == 0 ? std::vector<int> { opt.patch.back() } : opt.patch;
+}
+
+// Level sizes: each ceil(half) of the one below (reduce_plane's).
+std::vector<std::pair<int, int>> level_sizes(int w, int h, int levels)
+{
+    std::vector<std::pair<int, int>> sizes { { w, h } };
+    for (int l = 1; l < levels; ++l)
+        sizes.emplace_back((sizes.back().first + 1) / 2, (sizes.back().second + 1) / 2);
+    return sizes;
+}
+
+// The most levels (<= `wanted`) whose sample and output levels all hold their largest
+// patch; 0 if not even the finest does.
+int levels_that_fit(int sw, int sh, int w, int h, int wanted, const PatchOptions& opt)
+{
+    const auto samples = level_sizes(sw, sh, wanted), outs = level_sizes(w, h, wanted);
+    for (int l = 0; l < wanted; ++l) {
+        const int p = patches_at(opt, l).front();
+        if (std::min(samples[size_t(l)].first, samples[size_t(l)].second) < p
+            || std::min(outs[size_t(l)].first, outs[size_t(l)].second) < p)
+            return l;
+    }
+    return wanted;
+}
+
+// The levels to synthesize: opt.levels, or the automatic choice (the coarsest level shrinks
+// the sample's features to about the largest patch; at least 2 levels when they fit).
+// False with a message if the sample or output is too small.
+bool choose_levels(int sw, int sh, int w, int h, int feature, const PatchOptions& opt, int& levels,
+    std::string& error)
+{
+    const int largest = opt.patch.front();
+    if (opt.levels == 0) {
+        // A feature of a quarter of the sample at least: the coarsest level then sees the
+        // sample's layout (courses, the tile grid, clusters of flowers) even when its
+        // texture is fine.
+        const double ratio = std::max(double(feature), std::min(sw, sh) / 4.0) / double(largest);
+        const int wanted = std::clamp(1 + int(std::ceil(std::log2(std::max(ratio, 1.0)))), 2, 8);
+        levels = std::max(1, levels_that_fit(sw, sh, w, h, wanted, opt));
+        if (std::min({ sw, sh, w, h }) >= opt.patch.back())
+            return true;
+    } else {
+        levels = opt.levels;
+        const int fit = levels_that_fit(sw, sh, w, h, levels, opt);
+        if (fit == levels)
+            return true;
+        if (fit > 0) {
+            error = "levels=" + std::to_string(levels) + " is too many for a " + size_text(sw, sh)
+                + " sample and a " + size_text(w, h) + " output: level " + std::to_string(fit)
+                + " would be smaller than its " + std::to_string(patches_at(opt, fit).front())
+                + "-pixel patch (use levels=" + std::to_string(fit) + " or less)";
+            return false;
+        }
+    }
+    const int p = opt.patch.back();
+    error = std::min(sw, sh) < p
+        ? "the sample (" + size_text(sw, sh) + ") is smaller than the " + std::to_string(p)
+            + "-pixel patch (give a smaller patch=)"
+        : "size=" + size_text(w, h) + " is smaller than the " + std::to_string(p) + "-pixel patch";
+    return false;
+}
+
+// The coarsest field: seeded random sources.
+PatchField random_field(int w, int h, const detail::CentreRange& range, uint64_t seed)
+{
+    PatchField field { w, h, std::vector<uint32_t>(size_t(w) * size_t(h)),
+        std::vector<float>(size_t(w) * size_t(h), 0.0f) };
+    const int rw = range.x1() - range.x0() + 1, rh = range.y1() - range.y0() + 1;
+    for (size_t q = 0; q < field.source.size(); ++q) {
+        const uint64_t bits = random_bits(seed, 0x5041000000000001ull, q);
+        field.source[q] = range.clamp(
+            range.x0() + int(bits % uint64_t(rw)), range.y0() + int((bits >> 32) % uint64_t(rh)));
+    }
+    return field;
+}
+
+// The field of the next finer level: each pixel's coarse source, doubled, plus its offset
+// from its coarse pixel's position doubled.
+PatchField upsample_field(const PatchField& coarse, int coarse_sample_width, int w, int h,
+    const detail::CentreRange& range)
+{
+    PatchField field { w, h, std::vector<uint32_t>(size_t(w) * size_t(h)),
+        std::vector<float>(size_t(w) * size_t(h), 0.0f) };
+    for (int y = 0; y < h; ++y) {
+        const int yc = std::min(coarse.height - 1, int(int64_t(y) * coarse.height / h));
+        for (int x = 0; x < w; ++x) {
+            const int xc = std::min(coarse.width - 1, int(int64_t(x) * coarse.width / w));
+            const uint32_t s = coarse.source[size_t(yc) * size_t(coarse.width) + size_t(xc)];
+            const int sx = int(s % uint32_t(coarse_sample_width));
+            const int sy = int(s / uint32_t(coarse_sample_width));
+            field.source[size_t(y) * size_t(w) + size_t(x)]
+                = range.clamp(2 * sx + (x - 2 * xc), 2 * sy + (y - 2 * yc));
+        }
+    }
+    return field;
+}
+
+// The guide image as a plane scaled like the automatic guidance channel: zero mean and the
+// colour channels' mean standard deviation (guidance_channel's scale).
+bool guide_plane(const OIIO::ImageBuf& guide, int sw, int sh, const std::vector<Plane>& colour,
+    Plane& plane, std::string& error)
+{
+    PlanarImage g;
+    if (!planes_from_imagebuf(guide, g, error)) {
+        error = "guide: " + error;
+        return false;
+    }
+    if (g.nchannels() != 1 || g.width() != sw || g.height() != sh) {
+        error = "the guide is " + size_text(g.width(), g.height()) + " with "
+            + detail::count_text(g.nchannels(), "channel") + "; it must be one channel of the "
+            + "sample's size (" + size_text(sw, sh) + ")";
+        return false;
+    }
+    plane = g.channels[0];
+    detail::scale_like_colour(plane, colour);
+    return true;
+}
+
+bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOptions& opt,
+    OIIO::ImageBuf* source_map, const OIIO::ImageBuf* guide, PatchReport* report)
+{
+    std::string error;
+    PlanarImage in;
+    if (!detail::validated_sample(dst, sample, opt, in))
+        return false;
+    auto fail = [&](const std::string& message) {
+        dst.errorfmt("{}", message);
+        return false;
+    };
+    const int sw = in.width(), sh = in.height();
+    const int w = opt.width ? opt.width : sw, h = opt.height ? opt.height : sh;
+    const std::vector<Plane> colour(in.channels.begin(), in.channels.begin() + in.ncolor());
+    const int feature = detail::feature_size(colour);
+    int levels = 0;
+    if (!choose_levels(sw, sh, w, h, feature, opt, levels, error)
+        || !detail::check_memory(patch_memory_estimate(sw, sh, in.nchannels(), w, h, opt),
+            "size=" + size_text(w, h), error))
+        return fail(error);
+    if (guide && opt.guidance <= 0.0f)
+        return fail("guidance=0 : a guide needs a guidance weight above 0");
+
+    // The planes synthesized: the sample's, then the guidance channel (weighted).
+    std::vector<Plane> planes = in.channels;
+    if (opt.guidance > 0.0f) {
+        Plane g;
+        if (guide) {
+            if (!guide_plane(*guide, sw, sh, colour, g, error))
+                return fail(error);
+        } else {
+            g = detail::guidance_channel(colour, feature);
+        }
+        for (size_t i = 0; i < g.size(); ++i)
+            g.data()[i] *= opt.guidance;
+        planes.push_back(std::move(g));
+    }
+    const auto pyramid = gaussian_pyramid(planes, levels, Boundary::Reflect, opt.nthreads);
+    const auto out_sizes = level_sizes(w, h, levels);
+
+    // Progress: one unit per output pixel searched and voted, per iteration.
+    double total = 0.0, done = 0.0;
+    for (int l = 0; l < levels; ++l)
+        total += double(patches_at(opt, l).size()) * opt.iterations_at(l)
+            * double(out_sizes[size_t(l)].first) * double(out_sizes[size_t(l)].second);
+
+    PatchField field;
+    int coarse_sample_width = 0;
+    std::vector<Plane> out;
+    SampleLevel level;
+    for (int l = levels - 1; l >= 0; --l) {
+        level = detail::sample_level(pyramid[size_t(l)], opt.nthreads);
+        const int lw = out_sizes[size_t(l)].first, lh = out_sizes[size_t(l)].second;
+        const std::vector<int> patches = patches_at(opt, l);
+        const detail::CentreRange first { level.pixels.width, level.pixels.height,
+            patches.front() / 2 };
+        field = l == levels - 1 ? random_field(lw, lh, first, opt.seed)
+                                : upsample_field(field, coarse_sample_width, lw, lh, first);
+        coarse_sample_width = level.pixels.width;
+        if (l == levels - 1) { // the vote of the random field
+            detail::vote(level, field, patches.front(), PatchVote::Mean, opt.nthreads, out);
+        } else { // the coarser result, expanded (Kwatra et al. §4)
+            for (Plane& p : out)
+                p = expand_plane(p, lw, lh, Boundary::Circular, opt.nthreads);
+        }
+        // k-coherence where the layout forms (the lists of the level's largest patch serve
+        // its smaller ones); the finest level refines its coarser level's field with
+        // propagation and a local random search.
+        const std::vector<uint32_t> similar = l == 0
+            ? std::vector<uint32_t>()
+            : detail::similar_patches(level.pixels, patches.front(), opt.coherence, opt.nthreads);
+        for (size_t pi = 0; pi < patches.size(); ++pi) {
+            const int p = patches[pi];
+            const detail::CentreRange range { level.pixels.width, level.pixels.height, p / 2 };
+            for (uint32_t& s : field.source) // a smaller patch reaches nearer the edges
+                s = range.clamp(int(s % uint32_t(range.width)), int(s / uint32_t(range.width)));
+            for (int it = 0; it < opt.iterations_at(l); ++it) {
+                const detail::PixelImage padded
+                    = detail::interleave_padded(out, p / 2, opt.nthreads);
+                detail::MatchSettings match;
+                match.patch = p;
+                match.coherence = opt.coherence;
+                match.repetition = opt.repetition;
+                // The coarsest level lays the texture out (jump-flood passes spread the
+                // first matches of each patch size far); finer levels start from it and
+                // search near it.
+                match.steps = l == levels - 1 && it == 0 ? std::vector<int> { 4, 2, 1 }
+                                                         : std::vector<int> { 1 };
+                match.radius = l == levels - 1 ? 0 : kFineRadius;
+                match.seed = opt.seed;
+                match.stream = (uint64_t(l) * 8 + pi) * 64 + uint64_t(it);
+                match.nthreads = opt.nthreads;
+                detail::patch_match(level, padded, p / 2, similar, match, field);
+                detail::vote(level, field, p, opt.vote, opt.nthreads, out);
+                for (size_t c = 0; c < out.size(); ++c)
+                    match_histogram(
+                        out[c], level.histograms[c], HistogramMode::Exact, opt.nthreads);
+                done += double(lw) * double(lh);
+                if (opt.progress)
+                    opt.progress(float(done / total));
+            }
+        }
+    }
+
+    // The copy: each pixel the voted-for sample pixel nearest the average.
+    const int p = opt.patch.back();
+    const std::vector<uint32_t> chosen = detail::nearest_votes(level, field, p, out, opt.nthreads);
+    std::vector<Plane> result(size_t(in.nchannels()), Plane(w, h));
+    for (size_t c = 0; c < result.size(); ++c)
+        for (size_t q = 0; q < chosen.size(); ++q)
+            result[c].data()[q] = in.channels[c].data()[chosen[q]];
+    if (report) {
+        report->levels = levels;
+        report->feature_size = feature;
+        detail::copy_report(chosen, w, h, sw, sh, report->used_fraction, report->largest_copy);
+        report->largest_copy_fraction = double(report->largest_copy) / (double(sw) * double(sh));
+    }
+    PatchOptions resolved = opt;
+    resolved.width = w;
+    resolved.height = h;
+    resolved.levels = levels;
+    if (source_map)
+        detail::write_source_map(*source_map, chosen, w, h, sw, sw, sh);
+    detail::write_synthesis(dst, std::move(result), in, sample, "patch", resolved, source_map);
+    return true;
+}
+
+} // namespace
+
+bool patch_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOptions& opt,
+    OIIO::ImageBuf* source_map, const OIIO::ImageBuf* guide, PatchReport* report)
+{
+    return detail::guarded(dst, "patch_synthesize",
+        [&] { return synthesize(dst, sample, opt, source_map, guide, report); });
+}
+
+OIIO::ImageBuf patch_synthesize(const OIIO::ImageBuf& sample, const PatchOptions& opt,
+    OIIO::ImageBuf* source_map, const OIIO::ImageBuf* guide, PatchReport* report)
+{
+    return detail::value_form("patch_synthesize", [&](OIIO::ImageBuf& dst) {
+        return patch_synthesize(dst, sample, opt, source_map, guide, report);
+    });
+}
+
+} // namespace texsyn
