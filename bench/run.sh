@@ -3,7 +3,7 @@
 # Runs every workload of a benchmark program in its own process (so peak_MB is that
 # workload's) and prints median wall time and peak memory.
 # usage: bench/run.sh BUILD_DIR [filter-regex] [program: pyramid_bench (default), solid_bench,
-#        neighborhood_bench, choosy_bench, cascade_bench]
+#        neighborhood_bench, choosy_bench, cascade_bench, patch_bench]
 set -euo pipefail
 bench="$1/bench/${3:-pyramid_bench}"
 filter="${2:-.}"

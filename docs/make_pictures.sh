@@ -9,6 +9,33 @@ samples=../data/samples
 out=images
 mkdir -p "$out"
 unset OCIO
+# docs/patch.md: the sample, then --patch, --neighborhood and --pyramid at 320x320 (seed 1),
+# on the structured samples; docs/which-method.md: one sample and result per case.
+patch_pictures() {
+  for s in bricks tiles_green weave_green wood_grain flowers; do
+    "$texsyn" --seed 1 "$samples/$s.png" --patch:size=320x320 -o "$out/pp_patch.png"
+    "$texsyn" --seed 1 "$samples/$s.png" --neighborhood:size=320x320 -o "$out/pp_nb.png"
+    "$texsyn" --seed 1 "$samples/$s.png" --pyramid:size=320x320 -o "$out/pp_pyr.png"
+    oiiotool "$samples/$s.png" "$out/pp_patch.png" "$out/pp_nb.png" "$out/pp_pyr.png" \
+        --mosaic:pad=4 4x1 -o "$out/patch_$s.png"
+  done
+  "$texsyn" --seed 1 "$samples/bricks.png" --patch:size=320x320:repetition=0 -o "$out/pp_r0.png"
+  "$texsyn" --seed 1 "$samples/bricks.png" --patch:size=320x320:repetition=2 -o "$out/pp_r2.png"
+  oiiotool "$out/pp_r0.png" "$out/pp_patch.png" "$out/pp_r2.png" --mosaic:pad=4 3x1 \
+      -o "$out/patch_repetition.png"
+  "$texsyn" --seed 1 "$samples/rust.png" --pyramid:size=256x256 -o "$out/pp_a.png"
+  "$texsyn" --seed 1 "$samples/grass.png" --neighborhood:size=256x256 -o "$out/pp_b.png"
+  "$texsyn" --seed 1 "$samples/bricks.png" --patch:size=256x256 -o "$out/pp_c.png"
+  "$texsyn" --seed 1 "$samples/leaves_autumn.png" --choosy:size=256x256 -o "$out/pp_d.png"
+  "$texsyn" --seed 1 --cascade:preset=stone:size=256x256 -o "$out/pp_e.png"
+  oiiotool "$samples/rust.png" "$out/pp_a.png" --mosaic:pad=4 2x1 -o "$out/which_stochastic.png"
+  oiiotool "$samples/grass.png" "$out/pp_b.png" --mosaic:pad=4 2x1 -o "$out/which_foliage.png"
+  oiiotool "$samples/bricks.png" "$out/pp_c.png" --mosaic:pad=4 2x1 -o "$out/which_structured.png"
+  oiiotool "$samples/leaves_autumn.png" "$out/pp_d.png" --mosaic:pad=4 2x1 \
+      -o "$out/which_histogram.png"
+  oiiotool "$out/pp_e.png" -o "$out/which_no_sample.png"
+  rm -f "$out"/pp_*
+}
 oiiotool "$samples/rust.png" -o "$out/rust_sample.png"
 "$texsyn" --seed 1 "$samples/rust.png" --pyramid:size=512x512 -o "$out/rust_512.png"
 "$texsyn" --seed 1 "$samples/marble_pink.png" --pyramid:size=256x256 -o "$out/marble_steerable.png"
@@ -139,4 +166,5 @@ done
 oiiotool "${presets[@]}" --mosaic:pad=4 3x2 -o "$out/cascade_presets.png"
 rm -f "$out"/cc_*
 rm -f "$out/stucco_tile.png" "$out/rust.tsa"
+patch_pictures
 ls -la "$out"
