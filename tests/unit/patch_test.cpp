@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
 
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -46,7 +47,7 @@ detail::PatchField random_field(int w, int h, const detail::CentreRange& range, 
     for (size_t q = 0; q < f.source.size(); ++q) {
         const uint64_t bits = random_bits(seed, 1, q);
         f.source[q]
-            = range.clamp(range.x0() + int(bits % 1000), range.y0() + int((bits >> 32) % 1000));
+            = range.clamp(range.column_x(int(bits % 1000)), range.y0() + int((bits >> 32) % 1000));
     }
     return f;
 }
@@ -61,7 +62,7 @@ double exhaustive_mean(const detail::SampleLevel& sample, const detail::PixelIma
         for (int x = 0; x < w; ++x) {
             float best = std::numeric_limits<float>::infinity();
             for (int sy = range.y0(); sy <= range.y1(); ++sy)
-                for (int sx = range.x0(); sx <= range.x1(); ++sx)
+                for (int sx = range.column_x(0); sx <= range.column_x(range.columns() - 1); ++sx)
                     best = std::min(best,
                         detail::patch_distance(padded, pad, x, y, sample.pixels,
                             uint32_t(sy * sample.pixels.width + sx), patch, best));
@@ -100,11 +101,11 @@ TEST(PatchMatch, ApproachesTheExhaustiveSearch)
         target_planes.push_back(t);
     }
     const int patch = 7, pad = patch / 2;
-    const detail::SampleLevel sample = detail::sample_level(sample_planes, 0);
+    const detail::SampleLevel sample = detail::sample_level(sample_planes, 0, 0);
     const detail::PixelImage padded = detail::interleave_padded(target_planes, pad, 0);
     const detail::CentreRange range { 48, 48, pad };
     detail::PatchField field = random_field(32, 32, range, 3);
-    const std::vector<uint32_t> similar = detail::similar_patches(sample.pixels, patch, 2, 0);
+    const std::vector<uint32_t> similar = detail::similar_patches(sample.pixels, 0, patch, 2, 0);
     detail::MatchSettings match;
     match.patch = patch;
     match.coherence = 2;
@@ -136,7 +137,7 @@ TEST(PatchVote, AConsistentFieldOfAPeriodicSampleReproducesItExactly)
                 s(x, y) = c(x % period, y % period);
         sample_planes.push_back(s);
     }
-    const detail::SampleLevel sample = detail::sample_level(sample_planes, 0);
+    const detail::SampleLevel sample = detail::sample_level(sample_planes, 0, 0);
     // Output = one period (a torus); pixel (x, y) copies sample (x + 12, y + 12).
     detail::PatchField field { period, period, {}, std::vector<float>(period * period, 0.0f) };
     for (int y = 0; y < period; ++y)
@@ -231,6 +232,60 @@ TEST(PatchSynthesize, IsBitIdenticalAtAnyThreadCount)
     PatchOptions other = options(150, 130);
     other.seed = 6;
     EXPECT_NE(pixel_hash(patch_synthesize(sample, other)), first.substr(0, 16));
+}
+
+// The variants of isotropic=1: each a permutation of the sample's pixels, all different.
+TEST(PatchVariants, AreTheSamplesRotationsAndMirrorImages)
+{
+    EXPECT_EQ(detail::variant_count(6, 6, false), 1);
+    EXPECT_EQ(detail::variant_count(6, 6, true), 8);
+    EXPECT_EQ(detail::variant_count(6, 4, true), 4);
+    Plane p(5, 5);
+    for (size_t i = 0; i < p.size(); ++i)
+        p.data()[i] = float(i);
+    std::set<std::vector<float>> seen;
+    for (int t = 0; t < 8; ++t) {
+        const Plane v = detail::variant_plane(p, t);
+        std::vector<float> values(v.data(), v.data() + v.size());
+        seen.insert(values);
+        std::sort(values.begin(), values.end());
+        for (size_t i = 0; i < values.size(); ++i)
+            EXPECT_EQ(values[i], float(i)) << t;
+    }
+    EXPECT_EQ(seen.size(), 8u);
+    // t = 5: transposed ((1, 0) -> (0, 1)), then mirrored in x ((0, 1) -> (4, 1)).
+    EXPECT_EQ(detail::variant_source(5, 5, 5, 1, 0), 1u * 5 + 4);
+}
+
+// Horizontal over vertical gradient energy of the first channel: far from 1 for a texture
+// with a direction.
+double gradient_ratio(const OIIO::ImageBuf& buf)
+{
+    const Plane p = planes_of(buf).channels[0];
+    double gx = 0, gy = 0;
+    for (int y = 0; y + 1 < p.height(); ++y)
+        for (int x = 0; x + 1 < p.width(); ++x) {
+            gx += double(p(x + 1, y) - p(x, y)) * double(p(x + 1, y) - p(x, y));
+            gy += double(p(x, y + 1) - p(x, y)) * double(p(x, y + 1) - p(x, y));
+        }
+    return gx / gy;
+}
+
+// isotropic=1 takes patches from the rotated sample too: wood grain loses its direction,
+// and the source map still names pixels of the sample as given.
+TEST(PatchSynthesize, IsotropicTakesRotatedPatches)
+{
+    const OIIO::ImageBuf sample = linear_crop("wood_grain.png", 96, 96);
+    PatchOptions opt = options(128, 128);
+    const double kept = gradient_ratio(patch_synthesize(sample, opt));
+    opt.isotropic = 1;
+    OIIO::ImageBuf map;
+    const OIIO::ImageBuf turned = patch_synthesize(sample, opt, &map);
+    ASSERT_FALSE(turned.has_error()) << turned.geterror();
+    const double ratio = gradient_ratio(turned);
+    EXPECT_GT(std::abs(std::log(kept)), 2.0 * std::abs(std::log(ratio)))
+        << "kept " << kept << ", isotropic " << ratio;
+    EXPECT_EQ(pixel_hash(apply_source_map(map, sample)), pixel_hash(turned));
 }
 
 TEST(PatchSynthesize, AGuideImageSteersTheLayout)

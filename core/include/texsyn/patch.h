@@ -56,6 +56,10 @@ struct PatchOptions {
     /// most similar to it (Tong et al. 2002); 1 = PatchMatch's propagation alone.
     int coherence = 2;
     PatchVote vote = PatchVote::Robust;
+    /// 1: patches may also come from the sample rotated and mirrored (its 8 rotations and
+    /// mirror images if square, else its 3 mirror images besides itself), for samples
+    /// without a direction; 0: the sample's orientation is kept (courses stay horizontal).
+    int isotropic = 0;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.

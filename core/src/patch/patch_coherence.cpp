@@ -23,13 +23,13 @@ constexpr int kExclusion = 2;    // centres this close (each axis) are the same 
 } // namespace
 
 std::vector<uint32_t> similar_patches(
-    const PixelImage& sample, int patch, int coherence, int nthreads)
+    const PixelImage& sample, int cell_width, int patch, int coherence, int nthreads)
 {
-    const CentreRange range { sample.width, sample.height, patch / 2 };
+    const CentreRange range { sample.width, sample.height, patch / 2, cell_width };
     if (coherence < 2 || range.empty())
         return {};
     const size_t k = size_t(coherence - 1);
-    const int cw = range.x1() - range.x0() + 1, half = patch / 2;
+    const int cw = range.columns(), half = patch / 2;
     // The descriptor of a patch: every other pixel of it, each way (a quarter of the
     // values, which keeps the PCA and the ranking cheap and sees the same structure).
     const int side = (patch + 1) / 2, c = sample.channels, dim = side * side * c;
@@ -38,7 +38,7 @@ std::vector<uint32_t> similar_patches(
     OIIO::parallel_for(
         int64_t(0), int64_t(count),
         [&](int64_t i) {
-            const int cx = range.x0() + int(i % cw), cy = range.y0() + int(i / cw);
+            const int cx = range.column_x(int(i % cw)), cy = range.y0() + int(i / cw);
             float* v = vectors.data() + size_t(i) * size_t(dim);
             for (int r = 0; r < side; ++r)
                 for (int t = 0; t < side; ++t, v += c)
@@ -59,7 +59,7 @@ std::vector<uint32_t> similar_patches(
     // Vector indices to sample indices, rows moved to their centres.
     auto centre = [&](uint32_t i) {
         return uint32_t(range.y0() + int(i / uint32_t(cw))) * uint32_t(sample.width)
-            + uint32_t(range.x0() + int(i % uint32_t(cw)));
+            + uint32_t(range.column_x(int(i % uint32_t(cw))));
     };
     std::vector<uint32_t> lists(size_t(sample.width) * size_t(sample.height) * k);
     for (uint32_t i = 0; i < count; ++i)

@@ -126,7 +126,7 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
     const std::vector<uint32_t>& similar, const MatchSettings& settings, PatchField& field)
 {
     const int w = field.width, h = field.height, sw = sample.pixels.width;
-    const CentreRange range { sw, sample.pixels.height, settings.patch / 2 };
+    const CentreRange range { sw, sample.pixels.height, settings.patch / 2, sample.cell_width };
     const size_t n = size_t(w) * size_t(h);
     const int nblocks = (h + kRowBlock - 1) / kRowBlock;
     const OIIO::paropt par = OIIO::paropt(settings.nthreads).minitems(1);

@@ -42,6 +42,9 @@ const OptionTable<PatchOptions>& PatchOptions::table()
         t.choice("vote", &O::vote, { { "robust", PatchVote::Robust }, { "mean", PatchVote::Mean } },
             "how overlapping patches are averaged: robust (each weighted by how well it "
             "matches, Kwatra et al.'s IRLS weights; sharper) or mean");
+        t.integer("isotropic", &O::isotropic, 0, 1,
+            "1 = patches may also come from the sample rotated and mirrored (8 variants if "
+            "square, else 4); 0 = the sample's orientation is kept");
     });
 }
 
@@ -68,7 +71,8 @@ size_t patch_memory_estimate(int sample_width, int sample_height, int nchannels,
 {
     // With the guidance channel; the pyramids add a third.
     const double c = double(nchannels + (opt.guidance > 0.0f ? 1 : 0));
-    const double sample = double(sample_width) * double(sample_height);
+    const double variants = opt.isotropic ? (sample_width == sample_height ? 8.0 : 4.0) : 1.0;
+    const double sample = double(sample_width) * double(sample_height) * variants;
     const double out = double(out_width) * double(out_height);
     // The sample: its planes and interleaved pixels. The output: the vote's planes, the
     // padded interleaved copy, the field twice (source, distance), the vote's weights and

@@ -38,13 +38,26 @@ PixelImage interleave_padded(const std::vector<Plane>& planes, int pad, int nthr
 /// One level of the sample, as the search and the vote read it.
 struct SampleLevel {
     PixelImage pixels;                     ///< every channel, the guidance channel last
+    int cell_width = 0;                    ///< its variants' width (CentreRange), 0 = one
     std::vector<QuantileTable> histograms; ///< per channel, the targets of the vote
     double variance = 0.0;                 ///< summed over channels: a patch value's spread
 };
 
-/// The sample level of `planes`: interleaved, each channel's histogram, the summed
-/// variance.
-SampleLevel sample_level(const std::vector<Plane>& planes, int nthreads);
+/// The sample level of `planes` (variants `cell_width` wide side by side, 0 = one):
+/// interleaved, each channel's histogram, the summed variance.
+SampleLevel sample_level(const std::vector<Plane>& planes, int cell_width, int nthreads);
+
+/// The number of variants isotropic=1 takes of a width x height sample: its 8 rotations and
+/// mirror images if square, else the 4 that keep its size (mirrored in x, in y, both).
+int variant_count(int width, int height, bool isotropic);
+
+/// Variant `t` of a plane (t < variant_count): pixel (x, y) of the variant is pixel
+/// variant_source(t, …, x, y) of the plane.
+Plane variant_plane(const Plane& plane, int t);
+
+/// Where pixel (x, y) of variant `t` of a width x height sample comes from, as a sample
+/// index y' * width + x'.
+uint32_t variant_source(int t, int width, int height, int x, int y);
 
 /// The nearest-neighbour field of one output level: per output pixel (row-major), the
 /// centre of its source patch in the sample level (y * sample width + x) and the squared
@@ -55,20 +68,34 @@ struct PatchField {
     std::vector<float> distance;
 };
 
-/// The centres a patch of half-width `half` may take in a width x height sample level.
+/// The centres a patch of half-width `half` may take in a width x height sample level made
+/// of `cells` variants of the sample side by side, each cell_width wide (isotropic=1: the
+/// sample rotated and mirrored; 0 = one cell, the whole width). A patch never straddles two
+/// cells. Columns are numbered cell by cell.
 struct CentreRange {
     int width = 0, height = 0, half = 0;
-    int x0() const { return half; }
+    int cell_width = 0;
+
+    int cell() const { return cell_width > 0 ? cell_width : width; }
+    int cells() const { return width / cell(); }
+    int columns_per_cell() const { return cell() - 2 * half; }
+    int columns() const { return cells() * columns_per_cell(); }
+    int column_x(int i) const
+    {
+        return (i / columns_per_cell()) * cell() + half + i % columns_per_cell();
+    }
     int y0() const { return half; }
-    int x1() const { return width - 1 - half; } ///< inclusive
-    int y1() const { return height - 1 - half; }
-    bool empty() const { return x1() < x0() || y1() < y0(); }
-    size_t count() const { return empty() ? 0 : size_t(x1() - x0() + 1) * size_t(y1() - y0() + 1); }
-    /// (x, y) clamped into the range, as a sample index.
+    int y1() const { return height - 1 - half; } ///< inclusive
+    bool empty() const { return columns_per_cell() < 1 || y1() < y0(); }
+    size_t count() const { return empty() ? 0 : size_t(columns()) * size_t(y1() - y0() + 1); }
+    /// (x, y) clamped to a valid centre of the cell x falls in (the nearest cell if x is
+    /// outside the level), as a sample index.
     uint32_t clamp(int x, int y) const
     {
-        return uint32_t(std::clamp(y, y0(), y1())) * uint32_t(width)
-            + uint32_t(std::clamp(x, x0(), x1()));
+        const int c = cell();
+        const int k = std::clamp(x < 0 ? 0 : x / c, 0, cells() - 1);
+        const int local = std::clamp(x - k * c, half, c - 1 - half);
+        return uint32_t(std::clamp(y, y0(), y1())) * uint32_t(width) + uint32_t(k * c + local);
     }
 };
 
@@ -88,7 +115,7 @@ struct MatchSettings {
 /// nearest in PCA space; centres within 2 pixels of it excluded, padded with itself),
 /// coherence - 1 entries each. Empty if coherence < 2.
 std::vector<uint32_t> similar_patches(
-    const PixelImage& sample, int patch, int coherence, int nthreads);
+    const PixelImage& sample, int cell_width, int patch, int coherence, int nthreads);
 
 /// The squared distance between the patch centred at output (x, y) of `padded` (an
 /// interleave_padded with pad >= patch / 2 … only patch / 2 is read around it) and the
@@ -133,10 +160,13 @@ Plane guidance_channel(const std::vector<Plane>& colour, int feature_size);
 /// (capped at a quarter of the sample's side).
 int feature_size(const std::vector<Plane>& colour);
 
-/// The fraction of the sample's pixels that `source` (sample indices) copies, and the
-/// largest connected region of the output (circular, 4-connected) whose neighbours copy
-/// neighbouring sample pixels (a verbatim copy), in pixels.
-void copy_report(const std::vector<uint32_t>& source, int width, int height, int sample_width,
-    int sample_height, double& used_fraction, size_t& largest_copy);
+/// The fraction of a sample of `npixels` pixels that `source` (sample indices) copies.
+double used_fraction(const std::vector<uint32_t>& source, size_t npixels);
+
+/// The largest connected region of a width x height output (circular, 4-connected) whose
+/// neighbours copy neighbouring pixels of a sample_width x sample_height sample (a verbatim
+/// copy), in pixels.
+size_t largest_copy(const std::vector<uint32_t>& source, int width, int height, int sample_width,
+    int sample_height);
 
 } // namespace texsyn::detail

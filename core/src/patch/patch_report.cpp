@@ -34,15 +34,17 @@ struct Sets {
 
 } // namespace
 
-void copy_report(const std::vector<uint32_t>& source, int width, int height, int sample_width,
-    int sample_height, double& used_fraction, size_t& largest_copy)
+double used_fraction(const std::vector<uint32_t>& source, size_t npixels)
 {
-    const size_t npixels = size_t(sample_width) * size_t(sample_height);
     std::vector<char> used(npixels, 0);
     for (uint32_t s : source)
         used[s] = 1;
-    used_fraction = double(std::count(used.begin(), used.end(), 1)) / double(npixels);
+    return double(std::count(used.begin(), used.end(), 1)) / double(npixels);
+}
 
+size_t largest_copy(
+    const std::vector<uint32_t>& source, int width, int height, int sample_width, int sample_height)
+{
     // Neighbours copy neighbours: the right neighbour holds the next sample pixel of the
     // same row, the one below the pixel of the next sample row.
     Sets sets(source.size());
@@ -59,9 +61,10 @@ void copy_report(const std::vector<uint32_t>& source, int width, int height, int
                 sets.join(q, below);
         }
     std::vector<uint32_t> size(source.size(), 0);
-    largest_copy = 0;
+    size_t largest = 0;
     for (uint32_t q = 0; q < source.size(); ++q)
-        largest_copy = std::max<size_t>(largest_copy, ++size[sets.find(q)]);
+        largest = std::max<size_t>(largest, ++size[sets.find(q)]);
+    return largest;
 }
 
 } // namespace texsyn::detail

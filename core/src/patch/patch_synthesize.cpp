@@ -100,20 +100,22 @@ PatchField random_field(int w, int h, const detail::CentreRange& range, uint64_t
 {
     PatchField field { w, h, std::vector<uint32_t>(size_t(w) * size_t(h)),
         std::vector<float>(size_t(w) * size_t(h), 0.0f) };
-    const int rw = range.x1() - range.x0() + 1, rh = range.y1() - range.y0() + 1;
+    const int columns = range.columns(), rows = range.y1() - range.y0() + 1;
     for (size_t q = 0; q < field.source.size(); ++q) {
         const uint64_t bits = random_bits(seed, 0x5041000000000001ull, q);
-        field.source[q] = range.clamp(
-            range.x0() + int(bits % uint64_t(rw)), range.y0() + int((bits >> 32) % uint64_t(rh)));
+        field.source[q] = range.clamp(range.column_x(int(bits % uint64_t(columns))),
+            range.y0() + int((bits >> 32) % uint64_t(rows)));
     }
     return field;
 }
 
-// The field of the next finer level: each pixel's coarse source, doubled, plus its offset
-// from its coarse pixel's position doubled.
-PatchField upsample_field(const PatchField& coarse, int coarse_sample_width, int w, int h,
-    const detail::CentreRange& range)
+// The field of the next finer level: each pixel's coarse source, doubled within its cell
+// (the variant of the sample it lies in), plus its offset from its coarse pixel's position
+// doubled.
+PatchField upsample_field(const PatchField& coarse, const detail::CentreRange& coarse_range, int w,
+    int h, const detail::CentreRange& range)
 {
+    const int coarse_sample_width = coarse_range.width, coarse_cell = coarse_range.cell();
     PatchField field { w, h, std::vector<uint32_t>(size_t(w) * size_t(h)),
         std::vector<float>(size_t(w) * size_t(h), 0.0f) };
     for (int y = 0; y < h; ++y) {
@@ -123,8 +125,9 @@ PatchField upsample_field(const PatchField& coarse, int coarse_sample_width, int
             const uint32_t s = coarse.source[size_t(yc) * size_t(coarse.width) + size_t(xc)];
             const int sx = int(s % uint32_t(coarse_sample_width));
             const int sy = int(s / uint32_t(coarse_sample_width));
-            field.source[size_t(y) * size_t(w) + size_t(x)]
-                = range.clamp(2 * sx + (x - 2 * xc), 2 * sy + (y - 2 * yc));
+            const int cell = sx / coarse_cell, local = sx - cell * coarse_cell;
+            field.source[size_t(y) * size_t(w) + size_t(x)] = range.clamp(
+                cell * range.cell() + 2 * local + (x - 2 * xc), 2 * sy + (y - 2 * yc));
         }
     }
     return field;
@@ -188,7 +191,27 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
             g.data()[i] *= opt.guidance;
         planes.push_back(std::move(g));
     }
-    const auto pyramid = gaussian_pyramid(planes, levels, Boundary::Reflect, opt.nthreads);
+    // The sample's levels: with isotropic=1 its rotations and mirror images side by side,
+    // each reduced on its own (a variant's pyramid is not the variant of the pyramid).
+    const int variants = detail::variant_count(sw, sh, opt.isotropic != 0);
+    std::vector<std::vector<std::vector<Plane>>> pyramids;
+    for (int t = 0; t < variants; ++t) {
+        std::vector<Plane> turned;
+        for (const Plane& p : planes)
+            turned.push_back(t == 0 ? p : detail::variant_plane(p, t));
+        pyramids.push_back(gaussian_pyramid(turned, levels, Boundary::Reflect, opt.nthreads));
+    }
+    auto sample_at = [&](int l) {
+        const std::vector<Plane>& first = pyramids[0][size_t(l)];
+        const int cw = first[0].width(), ch = first[0].height();
+        std::vector<Plane> atlas(first.size(), Plane(cw * variants, ch));
+        for (int t = 0; t < variants; ++t)
+            for (size_t c = 0; c < atlas.size(); ++c)
+                for (int y = 0; y < ch; ++y)
+                    std::copy_n(pyramids[size_t(t)][size_t(l)][c].row(y), cw,
+                        atlas[c].row(y) + size_t(t) * size_t(cw));
+        return detail::sample_level(atlas, cw, opt.nthreads);
+    };
     const auto out_sizes = level_sizes(w, h, levels);
 
     // Progress: one unit per output pixel searched and voted, per iteration.
@@ -198,18 +221,18 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
             * double(out_sizes[size_t(l)].first) * double(out_sizes[size_t(l)].second);
 
     PatchField field;
-    int coarse_sample_width = 0;
+    detail::CentreRange coarse_range;
     std::vector<Plane> out;
     SampleLevel level;
     for (int l = levels - 1; l >= 0; --l) {
-        level = detail::sample_level(pyramid[size_t(l)], opt.nthreads);
+        level = sample_at(l);
         const int lw = out_sizes[size_t(l)].first, lh = out_sizes[size_t(l)].second;
         const std::vector<int> patches = patches_at(opt, l);
         const detail::CentreRange first { level.pixels.width, level.pixels.height,
-            patches.front() / 2 };
+            patches.front() / 2, level.cell_width };
         field = l == levels - 1 ? random_field(lw, lh, first, opt.seed)
-                                : upsample_field(field, coarse_sample_width, lw, lh, first);
-        coarse_sample_width = level.pixels.width;
+                                : upsample_field(field, coarse_range, lw, lh, first);
+        coarse_range = first;
         if (l == levels - 1) { // the vote of the random field
             detail::vote(level, field, patches.front(), PatchVote::Mean, opt.nthreads, out);
         } else { // the coarser result, expanded (Kwatra et al. §4)
@@ -221,10 +244,12 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
         // propagation and a local random search.
         const std::vector<uint32_t> similar = l == 0
             ? std::vector<uint32_t>()
-            : detail::similar_patches(level.pixels, patches.front(), opt.coherence, opt.nthreads);
+            : detail::similar_patches(
+                level.pixels, level.cell_width, patches.front(), opt.coherence, opt.nthreads);
         for (size_t pi = 0; pi < patches.size(); ++pi) {
             const int p = patches[pi];
-            const detail::CentreRange range { level.pixels.width, level.pixels.height, p / 2 };
+            const detail::CentreRange range { level.pixels.width, level.pixels.height, p / 2,
+                level.cell_width };
             for (uint32_t& s : field.source) // a smaller patch reaches nearer the edges
                 s = range.clamp(int(s % uint32_t(range.width)), int(s / uint32_t(range.width)));
             for (int it = 0; it < opt.iterations_at(l); ++it) {
@@ -255,9 +280,16 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
         }
     }
 
-    // The copy: each pixel the voted-for sample pixel nearest the average.
+    // The copy: each pixel the voted-for sample pixel nearest the average, as a pixel of the
+    // sample as given (a variant's pixel is one of the sample's).
     const int p = opt.patch.back();
-    const std::vector<uint32_t> chosen = detail::nearest_votes(level, field, p, out, opt.nthreads);
+    const std::vector<uint32_t> picked = detail::nearest_votes(level, field, p, out, opt.nthreads);
+    std::vector<uint32_t> chosen(picked.size());
+    for (size_t q = 0; q < picked.size(); ++q) {
+        const int x = int(picked[q] % uint32_t(level.pixels.width));
+        const int y = int(picked[q] / uint32_t(level.pixels.width));
+        chosen[q] = detail::variant_source(x / sw, sw, sh, x % sw, y);
+    }
     std::vector<Plane> result(size_t(in.nchannels()), Plane(w, h));
     for (size_t c = 0; c < result.size(); ++c)
         for (size_t q = 0; q < chosen.size(); ++q)
@@ -265,7 +297,8 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
     if (report) {
         report->levels = levels;
         report->feature_size = feature;
-        detail::copy_report(chosen, w, h, sw, sh, report->used_fraction, report->largest_copy);
+        report->used_fraction = detail::used_fraction(chosen, size_t(sw) * size_t(sh));
+        report->largest_copy = detail::largest_copy(picked, w, h, level.pixels.width, sh);
         report->largest_copy_fraction = double(report->largest_copy) / (double(sw) * double(sh));
     }
     PatchOptions resolved = opt;
