@@ -112,6 +112,17 @@ OIIO::TypeDesc data_format_argument(const std::string& v)
     return t;
 }
 
+// Whether two output paths name the same file, however spelled (./a.exr, d/../a.exr).
+bool same_path(const std::string& a, const std::string& b)
+{
+    std::error_code ea, eb;
+    const std::filesystem::path pa
+        = std::filesystem::weakly_canonical(std::filesystem::absolute(a, ea), ea);
+    const std::filesystem::path pb
+        = std::filesystem::weakly_canonical(std::filesystem::absolute(b, eb), eb);
+    return a == b || (!ea && !eb && pa == pb);
+}
+
 // An output path (of -o, --recipe or a file option) must not name an input and must be
 // writable.
 void check_output_path(
@@ -295,11 +306,16 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
         if (!OIIO::Strutil::iends_with(recipe, ".texsyn"))
             throw CliError("--recipe " + recipe + " : name the recipe *.texsyn");
     }
-    for (const auto& [option, out] : side_outputs) {
+    for (size_t i = 0; i < side_outputs.size(); ++i) {
+        const auto& [option, out] = side_outputs[i];
         check_output_path(option + "=", out, inputs);
         for (const std::string& other : outputs)
-            if (other == out)
+            if (same_path(other, out))
                 throw CliError(option + "=" + out + " : is also written by -o");
+        for (size_t j = 0; j < i; ++j)
+            if (same_path(side_outputs[j].second, out))
+                throw CliError(option + "=" + out + " : is also written by " + side_outputs[j].first
+                    + "=" + side_outputs[j].second);
     }
     for (const std::string& out : outputs) {
         check_output_path("-o", out, inputs);

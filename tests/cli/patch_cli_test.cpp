@@ -106,6 +106,11 @@ TEST_F(Cli, BadPatchRequestsAreRefused)
         "texsyn ERROR: --patch : vote=median : not one of robust|mean");
     expect_failure("stucco.png --patch:map=coords.png -o out.exr",
         "texsyn ERROR: --patch : map=coords.png : name it *.exr");
+    // Two writers of one file, however it is spelled, are refused before anything runs.
+    expect_failure("stucco.png --patch:map=m.exr -o ./m.exr",
+        "texsyn ERROR: map=m.exr : is also written by -o");
+    expect_failure("stucco.png --patch:size=32x32:map=m.exr --patch:map=./m.exr -o out.exr",
+        "texsyn ERROR: map=./m.exr : is also written by map=m.exr");
     expect_failure("stucco.png --patch:guide=missing.exr -o out.exr",
         "texsyn ERROR: --patch : guide=missing.exr : no such file");
     expect_failure_starting("stucco.png --patch:size=60000x60000 -o out.exr",
