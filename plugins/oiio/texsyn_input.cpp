@@ -37,6 +37,8 @@ public:
         const std::string base = name.substr(0, q);
         if (!Strutil::iends_with(base, ".texsyn"))
             return false;
+        // Any existing file is ours, FIFOs and devices included: open() then refuses them,
+        // where other formats' probes would block reading them.
         std::error_code ec;
         if (std::filesystem::exists(base, ec)
             || std::filesystem::exists(base.substr(0, base.size() - 7), ec))

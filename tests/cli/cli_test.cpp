@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <OpenImageIO/imagebufalgo.h>
@@ -222,6 +223,33 @@ TEST_F(Cli, BadFilesAreRefused)
     expect_failure("folder --pyramid -o out.exr",
         "texsyn ERROR: folder: is a directory, not an image",
         { "stucco.png", "folder", "cut.png", "notes.png" });
+    // FIFOs and devices are refused before any library reads them (reading would block, or
+    // never end).
+    ASSERT_EQ(::mkfifo((dir / "pipe.png").c_str(), 0600), 0);
+    const auto inputs = { std::string("stucco.png"), std::string("folder"), std::string("cut.png"),
+        std::string("notes.png"), std::string("pipe.png") };
+    expect_failure("pipe.png --pyramid -o out.exr",
+        "texsyn ERROR: pipe.png: is not a regular file (a FIFO, device or socket), not an image",
+        inputs);
+    expect_failure("/dev/zero --pyramid -o out.exr",
+        "texsyn ERROR: /dev/zero: is not a regular file (a FIFO, device or socket), not an "
+        "image",
+        inputs);
+    expect_failure("--colorconfig pipe.png stucco.png --pyramid -o out.exr",
+        "texsyn ERROR: colour config 'pipe.png': is not a regular file (a FIFO, device or "
+        "socket), not an OCIO config",
+        inputs);
+}
+
+// An output name as long as a file name may be (255 bytes) is written: the temporary name
+// beside it stays within that limit too.
+TEST_F(Cli, LongOutputNamesAreWritten)
+{
+    const std::string name = std::string(250, 'n') + ".exr";
+    CliRun r = texsyn("stucco.png --pyramid:size=16x16:iterations=1 -o " + name);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / name));
+    EXPECT_EQ(outputs().size(), 1u); // no temporary left beside it
 }
 
 TEST_F(Cli, NonFinitePixelsAreRefused)

@@ -7,6 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 using namespace texsyn;
@@ -94,6 +97,35 @@ TEST(Recipe, RejectsBadRecipesNamingTheProblem)
     EXPECT_FALSE(
         parse_recipe(R"({ "sample": "a.png", "seed": 18446744073709551615 })", "", r, error));
     EXPECT_EQ(error, "seed=18446744073709551615 : out of range 0..2147483647");
+}
+
+// Deeply nested JSON is refused before the parser recurses into it (it would overflow the
+// stack of the process reading the recipe: stock oiiotool, through the plugin).
+TEST(Recipe, DeepNestingIsRefusedBeforeParsing)
+{
+    Recipe r;
+    std::string error;
+    EXPECT_FALSE(parse_recipe(std::string(1000000, '['), "", r, error));
+    EXPECT_EQ(error, "malformed JSON (nested more than 64 deep)");
+    // Brackets inside strings are text.
+    EXPECT_TRUE(parse_recipe(
+        R"({ "sample": "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[.png" })",
+        "", r, error))
+        << error;
+}
+
+// A recipe that is a FIFO or a device is refused without reading it.
+TEST(Recipe, SpecialFilesAreRefused)
+{
+    const std::string fifo = (std::filesystem::temp_directory_path()
+        / ("texsyn_recipe_fifo_" + std::to_string(::getpid()) + ".texsyn"))
+                                 .string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    Recipe r;
+    std::string error;
+    EXPECT_FALSE(recipe_from_filename(fifo, r, error));
+    EXPECT_EQ(error, fifo + ": is not a regular file (a FIFO, device or socket), not a recipe");
+    std::filesystem::remove(fifo);
 }
 
 TEST(Recipe, RestArgumentsOverrideFields)

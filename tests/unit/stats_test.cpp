@@ -304,7 +304,7 @@ TEST(AnalysisFileIo, MissingFilesAndNamesAreReported)
     TextureStatistics stats;
     std::string error;
     EXPECT_FALSE(read_statistics("/nonexistent/x.tsa", stats, error));
-    EXPECT_EQ(error, "/nonexistent/x.tsa: cannot open the analysis file");
+    EXPECT_EQ(error, "/nonexistent/x.tsa: no such file");
     EXPECT_TRUE(is_analysis_filename("a/b/rust.TSA"));
     EXPECT_FALSE(is_analysis_filename("rust.tsa.png"));
 }

@@ -15,9 +15,16 @@ namespace texsyn {
 /// spec then says "oiio:UnassociatedAlpha"). Reads with its own ImageInput, never through
 /// OIIO's shared ImageCache, so it is safe inside an OIIO format plugin. If `native` is not
 /// null it receives the file's own spec (pixel type included). Fails (false, "FILE:
-/// reason") if the file is missing, unreadable, truncated or not an image.
+/// reason") if the file is missing, not a regular file, unreadable, truncated or not an
+/// image, or if its pixels cannot be allocated.
 bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error,
     OIIO::ImageSpec* native = nullptr);
+
+/// False (with "FILE: no such file", "FILE: is a directory, not WHAT" or "FILE: is not a
+/// regular file (a FIFO, device or socket), not WHAT") unless `filename` is a regular file
+/// (after links). Checked before any library opens a file: reading a FIFO or /dev/zero
+/// would block or never end.
+bool check_regular_file(const std::string& filename, const std::string& what, std::string& error);
 
 /// A path in the same directory as `filename`, with the same extension (so OIIO picks the
 /// same format), that does not exist yet: write there, then commit_file().

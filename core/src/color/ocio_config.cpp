@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // ColorConfig: a thin, exception-free layer over an OCIO 2.1 config.
 #include <texsyn/color.h>
+#include <texsyn/io.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -47,6 +48,10 @@ std::unique_ptr<ColorConfig> ColorConfig::load(const std::string& explicit_path,
     }
     auto impl = std::make_unique<Impl>();
     impl->source = path.empty() ? "<bundled>" : path;
+    if (!path.empty() && !check_regular_file(path, "an OCIO config", error)) {
+        error = "colour config '" + path + "': " + error.substr(path.size() + 2);
+        return nullptr;
+    }
     try {
         if (path.empty()) {
             std::istringstream text(texsyn_bundled_ocio_config);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <texsyn/io.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <system_error>
@@ -14,18 +15,30 @@ namespace texsyn {
 
 namespace fs = std::filesystem;
 
-bool read_image(
-    const std::string& filename, OIIO::ImageBuf& dst, std::string& error, OIIO::ImageSpec* native)
+bool check_regular_file(const std::string& filename, const std::string& what, std::string& error)
 {
     std::error_code ec;
-    if (!fs::exists(filename, ec)) {
+    const fs::file_status status = fs::status(filename, ec);
+    if (ec || !fs::exists(status)) {
         error = filename + ": no such file";
         return false;
     }
-    if (fs::is_directory(filename, ec)) {
-        error = filename + ": is a directory, not an image";
+    if (fs::is_directory(status)) {
+        error = filename + ": is a directory, not " + what;
         return false;
     }
+    if (!fs::is_regular_file(status)) {
+        error = filename + ": is not a regular file (a FIFO, device or socket), not " + what;
+        return false;
+    }
+    return true;
+}
+
+bool read_image(
+    const std::string& filename, OIIO::ImageBuf& dst, std::string& error, OIIO::ImageSpec* native)
+{
+    if (!check_regular_file(filename, "an image", error))
+        return false;
     // Read with an ImageInput of our own, not through OIIO's shared ImageCache: texsyn runs
     // inside OIIO tools (as their format plugin), whose cache must not be re-entered while
     // it is opening the recipe. Ask for un-associated colour where the file stores it that
@@ -50,6 +63,9 @@ bool read_image(
     spec.format = OIIO::TypeFloat;
     spec.channelformats.clear();
     OIIO::ImageBuf buf(spec);
+    if (!buf.localpixels()) // OIIO logs a failed allocation and leaves no pixels
+        return fail("not enough memory for its " + std::to_string(spec.width) + "x"
+            + std::to_string(spec.height) + " pixels");
     // All pixels now, so truncation is found here and not mid-synthesis.
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, buf.localpixels()))
         return fail(in->geterror());
@@ -63,8 +79,14 @@ std::string temporary_path_for(const std::string& filename)
 {
     static std::atomic<unsigned> counter { 0 };
     fs::path p(filename);
-    std::string name = "." + p.stem().string() + ".texsyn-tmp" + std::to_string(::getpid()) + "-"
+    // Within NAME_MAX (255) even for a long name: the stem is shortened, never the marker,
+    // pid and extension that make the file recognisable.
+    const std::string tag = ".texsyn-tmp" + std::to_string(::getpid()) + "-"
         + std::to_string(counter++) + p.extension().string();
+    std::string stem = p.stem().string();
+    if (1 + stem.size() + tag.size() > 255)
+        stem.resize(255 - 1 - std::min<size_t>(tag.size(), 254));
+    const std::string name = "." + stem + tag;
     return (p.parent_path() / name).string();
 }
 

@@ -13,7 +13,10 @@
 #include <OpenImageIO/strutil.h>
 #include <nlohmann/json.hpp>
 
+#include <texsyn/io.h>
 #include <texsyn/stats.h>
+
+#include "json_depth_pvt.h"
 
 namespace texsyn {
 
@@ -334,6 +337,11 @@ bool Recipe::validate(std::string& error) const
 bool parse_recipe(
     const std::string& text, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
+    constexpr size_t max_depth = 64; // a recipe needs 2
+    if (detail::json_nesting_depth(text, max_depth) > max_depth) {
+        error = "malformed JSON (nested more than " + std::to_string(max_depth) + " deep)";
+        return false;
+    }
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(text);
@@ -428,10 +436,8 @@ bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& 
     Recipe r;
     std::error_code ec;
     std::string base_dir;
-    if (fs::is_directory(base, ec)) {
-        error = base + ": is a directory, not a recipe";
+    if (fs::exists(base, ec) && !check_regular_file(base, "a recipe", error))
         return false;
-    }
     // "rust.png.texsyn": the sample is "rust.png" unless the method takes none.
     const bool named_sample = !fs::is_regular_file(base, ec);
     const std::string sample = base.substr(0, base.size() - 7);

@@ -24,6 +24,8 @@
 
 #include <texsyn/io.h>
 
+#include "recipe/json_depth_pvt.h"
+
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "analysis files are little-endian");
 
 namespace texsyn {
@@ -290,6 +292,13 @@ bool parse_statistics(
     const size_t checksum_at = bytes.size() - 8;
     if (fnv1a(bytes.data(), checksum_at) != read_u64(bytes.data() + checksum_at))
         return fail("corrupted or truncated analysis file (checksum mismatch)");
+    constexpr size_t max_depth = 64; // a header needs 3
+    if (detail::json_nesting_depth(
+            std::string_view(
+                reinterpret_cast<const char*>(bytes.data()) + header_at, size_t(header_size)),
+            max_depth)
+        > max_depth)
+        return fail("malformed header: nested more than 64 deep");
     TextureStatistics s;
     std::vector<size_t> sizes;
     try {
@@ -335,6 +344,8 @@ bool parse_statistics(
 
 bool read_statistics(const std::string& filename, TextureStatistics& stats, std::string& error)
 {
+    if (!check_regular_file(filename, "an analysis file", error))
+        return false;
     std::error_code ec;
     const auto size = std::filesystem::file_size(filename, ec);
     if (!ec && size > (uint64_t(8) << 30)) {
