@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // texsyn: an oiiotool-style command line over libtexsyn. Parsing and dispatch only: every
 // command is a row of the method registry (texsyn/methods.h).
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <string>
 
 #include <unistd.h>
 
@@ -53,6 +56,16 @@ void run(CliState& state, const std::vector<std::string>& args)
     }
 }
 
+// Throws unless everything printed to stdout (help, reports) reached it: a full disk or a
+// closed pipe must not end in success.
+void check_stdout()
+{
+    errno = 0;
+    if (std::fflush(stdout) != 0 || std::ferror(stdout))
+        throw CliError(std::string("standard output: write error")
+            + (errno ? " (" + std::string(std::strerror(errno)) + ")" : ""));
+}
+
 } // namespace
 
 } // namespace texsyn::cli
@@ -68,12 +81,15 @@ int main(int argc, char* argv[])
             print_help();
             return 1;
         }
-        if (check_command_line(state, args) == Early::Exit)
+        if (check_command_line(state, args) == Early::Exit) {
+            check_stdout();
             return 0;
+        }
         state.progress = ::isatty(STDERR_FILENO);
         if (state.threads > 0)
             OIIO::attribute("threads", state.threads);
         run(state, args);
+        check_stdout();
         state.outputs.commit();
     } catch (const std::exception& e) {
         state.outputs.discard();

@@ -241,6 +241,19 @@ TEST_F(Cli, BadFilesAreRefused)
         inputs);
 }
 
+// What the tool prints must reach stdout: a full disk is an error, not a success.
+TEST_F(Cli, AFullStdoutIsAnError)
+{
+    for (const std::string args : { "--help", "--list-methods", "stucco.png --check" }) {
+        const std::string cmd = "cd " + quote(dir.string()) + " && " + quote(TEXSYN_EXE) + " "
+            + args + " > /dev/full 2> err.txt";
+        const int rc = std::system(cmd.c_str());
+        EXPECT_EQ(WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, 1) << args;
+        EXPECT_EQ(slurp(dir / "err.txt").find("texsyn ERROR: standard output: write error"), 0u)
+            << args;
+    }
+}
+
 // An output name as long as a file name may be (255 bytes) is written: the temporary name
 // beside it stays within that limit too.
 TEST_F(Cli, LongOutputNamesAreWritten)
