@@ -18,7 +18,7 @@ void run_apply_map(CliState& state, const std::string& map_file, const std::stri
     std::string error;
     bool ok;
     {
-        QuietStderr quiet;
+        QuietStderr quiet(command);
         ok = read_image(map_file, map, error);
     }
     if (!ok)

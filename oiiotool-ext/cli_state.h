@@ -21,6 +21,7 @@ struct CliState {
     // Global options.
     uint64_t seed = 0;
     int threads = 0;
+    size_t max_memory = 0; ///< --max-memory in bytes; 0 = the default limit
     bool verbose = false;
     bool subbands = false;
     bool progress = false; ///< -v or stderr is a terminal

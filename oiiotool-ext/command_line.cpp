@@ -10,6 +10,7 @@
 #include <OpenImageIO/strutil.h>
 
 #include <texsyn/io.h>
+#include <texsyn/memory.h>
 
 #include "cli_error.h"
 #include "commands.h"
@@ -20,7 +21,8 @@ namespace texsyn::cli {
 bool takes_argument(const std::string& a)
 {
     return a == "--seed" || a == "--threads" || a == "--colorconfig" || a == "--iscolorspace"
-        || a == "--tocolorspace" || a == "-d" || a == "-o" || a == "--recipe";
+        || a == "--tocolorspace" || a == "-d" || a == "-o" || a == "--recipe"
+        || a == "--max-memory";
 }
 
 bool is_flag(const std::string& a)
@@ -219,7 +221,11 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
                 state.seed = uint64_t(int_argument("--seed", v, 0, 2147483647));
             else if (a == "--threads")
                 state.threads = int(int_argument("--threads", v, 0, 1024));
-            else if (a == "--colorconfig")
+            else if (a == "--max-memory") {
+                std::string error;
+                if (!parse_memory_size(v, state.max_memory, error))
+                    throw CliError("--max-memory " + v + " : " + error);
+            } else if (a == "--colorconfig")
                 state.colorconfig_path = v;
             else if (a == "-d")
                 state.data_format = data_format_argument(v);

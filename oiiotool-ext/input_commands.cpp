@@ -28,7 +28,7 @@ void push_input(CliState& state, const std::string& filename)
     std::string error;
     bool ok;
     {
-        QuietStderr quiet; // image libraries print their own diagnostics
+        QuietStderr quiet(filename); // image libraries print their own diagnostics
         ok = read_sample(
             filename, state.colors(), state.pending_iscolorspace, sample, error, state.threads);
     }

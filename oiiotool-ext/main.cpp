@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // texsyn: an oiiotool-style command line over libtexsyn. Parsing and dispatch only: every
 // command is a row of the method registry (texsyn/methods.h).
+#include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -15,6 +18,10 @@
 #include "cli_error.h"
 #include "command_line.h"
 #include "commands.h"
+#include "quiet_stderr.h"
+
+#include <texsyn/io.h>
+#include <texsyn/memory.h>
 
 namespace texsyn::cli {
 
@@ -66,6 +73,55 @@ void check_stdout()
             + (errno ? " (" + std::string(std::strerror(errno)) + ")" : ""));
 }
 
+// `message` with every word longer than 120 characters cut to its first 60 ("...(N
+// characters)"): errors echo arguments, and a 100 kB option value must not make a 100 kB
+// line.
+std::string readable(const std::string& message)
+{
+    std::string out;
+    size_t i = 0;
+    while (i < message.size()) {
+        const size_t end = std::min(message.find(' ', i), message.size());
+        if (end - i > 120)
+            out += message.substr(i, 60) + "...(" + std::to_string(end - i) + " characters)";
+        else
+            out += message.substr(i, end - i);
+        if (end < message.size())
+            out += ' ';
+        i = end + 1;
+    }
+    return out;
+}
+
+// SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE: remove every temporary output file and end
+// at once with 128 + the signal's number (130 for Ctrl-C, 143 for SIGTERM).
+extern "C" void end_on_signal(int sig)
+{
+    texsyn::remove_live_temporaries();
+    ::_exit(128 + sig);
+}
+
+// A library calling exit() (libjpeg on a write error) still reports its cause and leaves
+// no temporary file.
+void end_on_exit()
+{
+    QuietStderr::report_exit();
+    texsyn::remove_live_temporaries();
+}
+
+void install_handlers()
+{
+    struct sigaction sa { };
+    sa.sa_handler = end_on_signal;
+    sigemptyset(&sa.sa_mask);
+    for (int sig : { SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE })
+        ::sigaction(sig, &sa, nullptr);
+    // Past a file-size limit (ulimit -f) a write fails with EFBIG, reported like a full
+    // disk, instead of killing the process with its files half-written.
+    std::signal(SIGXFSZ, SIG_IGN);
+    std::atexit(end_on_exit);
+}
+
 } // namespace
 
 } // namespace texsyn::cli
@@ -74,6 +130,7 @@ int main(int argc, char* argv[])
 {
     using namespace texsyn::cli;
     std::vector<std::string> args(argv + 1, argv + argc);
+    install_handlers();
     CliState state;
     state.command_line = OIIO::Strutil::join(std::vector<std::string>(argv, argv + argc), " ");
     try {
@@ -86,6 +143,7 @@ int main(int argc, char* argv[])
             return 0;
         }
         state.progress = ::isatty(STDERR_FILENO);
+        texsyn::set_memory_limit(state.max_memory);
         if (state.threads > 0)
             OIIO::attribute("threads", state.threads);
         run(state, args);
@@ -93,7 +151,7 @@ int main(int argc, char* argv[])
         state.outputs.commit();
     } catch (const std::exception& e) {
         state.outputs.discard();
-        std::fprintf(stderr, "texsyn ERROR: %s\n", e.what());
+        std::fprintf(stderr, "texsyn ERROR: %s\n", readable(e.what()).c_str());
         return 1;
     }
     return 0;

@@ -94,11 +94,11 @@ void write_option_file(CliState& state, const std::string& command, const std::s
     std::string error;
     bool ok;
     {
-        QuietStderr quiet;
-        ok = write_image_atomic(image, state.outputs.add(file), OIIO::TypeFloat, error);
+        QuietStderr quiet(command + " : " + option + "=" + file);
+        ok = write_image_verified(image, state.outputs.add(file), OIIO::TypeFloat, error);
     }
     if (!ok)
-        throw CliError(command + " : " + option + "=" + error); // error: "<file>: cannot …"
+        throw CliError(command + " : " + option + "=" + state.outputs.final_names(error));
 }
 
 } // namespace
@@ -112,7 +112,7 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     OptionImages files;
     bool ok;
     {
-        QuietStderr quiet;
+        QuietStderr quiet(command);
         ok = read_option_files(options, state.colors(), files, error, state.threads);
     }
     if (!ok)

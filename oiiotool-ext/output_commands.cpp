@@ -7,7 +7,6 @@
 #include "quiet_stderr.h"
 
 #include <filesystem>
-#include <fstream>
 
 #include <OpenImageIO/filesystem.h>
 
@@ -30,7 +29,7 @@ void write_analysis(CliState& state, StackItem& item, const std::string& filenam
 {
     std::string error;
     if (!write_statistics(state.outputs.add(filename), *item.analysis, error))
-        throw CliError("-o " + filename + " : could not write the analysis file");
+        throw CliError("-o " + filename + " : " + state.outputs.final_names(without_file(error)));
     item.file = filename; // once committed, the analysis is that file (for --recipe)
 }
 
@@ -70,12 +69,12 @@ void write_image(CliState& state, const StackItem& item, const std::string& file
     const std::string tmp = state.outputs.add(filename);
     bool ok;
     {
-        QuietStderr quiet;
+        QuietStderr quiet("-o " + filename);
         ok = state.subbands ? write_subband_exr(tmp, out, item.subbands, error)
-                            : write_image_atomic(out, tmp, type, error);
+                            : write_image_verified(out, tmp, type, error);
     }
     if (!ok)
-        throw CliError("-o " + filename + " : " + without_file(error));
+        throw CliError("-o " + filename + " : " + state.outputs.final_names(without_file(error)));
 }
 
 } // namespace
@@ -101,10 +100,10 @@ void write_recipe(CliState& state, const std::string& filename)
     Recipe recipe = *item.recipe;
     recipe.tocolorspace = item.output_colorspace;
     const std::string dir = std::filesystem::path(filename).parent_path().string();
-    std::ofstream out(state.outputs.add(filename), std::ios::binary);
-    out << recipe_to_json(recipe, dir.empty() ? "." : dir);
-    if (!out.flush())
-        throw CliError("--recipe " + filename + " : cannot write");
+    std::string reason;
+    if (!write_bytes(
+            state.outputs.add(filename), recipe_to_json(recipe, dir.empty() ? "." : dir), reason))
+        throw CliError("--recipe " + filename + " : cannot write (" + reason + ")");
 }
 
 } // namespace texsyn::cli

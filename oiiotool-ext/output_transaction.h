@@ -18,6 +18,9 @@ public:
     void commit();
     /// Removes every temporary file written so far.
     void discard();
+    /// `message` with the temporary files' names (and names derived from them, as
+    /// libraries' own temporaries) replaced by the final names the user gave.
+    std::string final_names(std::string message) const;
 
 private:
     std::vector<std::pair<std::string, std::string>> m_pending; ///< (temporary, final)

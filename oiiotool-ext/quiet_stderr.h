@@ -1,41 +1,31 @@
 // SPDX-License-Identifier: Apache-2.0
 // Silences stderr for a scope: image libraries (libpng, libtiff) print their own
 // diagnostics before OIIO reports the error, and the tool states each error once, on one
-// line.
+// line. What they print is kept, not thrown away: a library that ends the process inside
+// the scope (libjpeg calls exit() on a write error) still gets its cause reported.
 #pragma once
 
-#include <cstdio>
-
-#include <fcntl.h>
-#include <unistd.h>
+#include <string>
 
 namespace texsyn::cli {
 
 class QuietStderr {
 public:
-    QuietStderr()
-    {
-        std::fflush(stderr);
-        m_saved = ::dup(STDERR_FILENO);
-        int devnull = ::open("/dev/null", O_WRONLY);
-        if (m_saved >= 0 && devnull >= 0)
-            ::dup2(devnull, STDERR_FILENO);
-        if (devnull >= 0)
-            ::close(devnull);
-    }
-    ~QuietStderr()
-    {
-        std::fflush(stderr);
-        if (m_saved >= 0) {
-            ::dup2(m_saved, STDERR_FILENO);
-            ::close(m_saved);
-        }
-    }
+    /// Silences stderr until destruction. `context` ("-o out.jpg") starts the error line
+    /// printed if the process exits before then.
+    explicit QuietStderr(std::string context);
+    ~QuietStderr();
     QuietStderr(const QuietStderr&) = delete;
     QuietStderr& operator=(const QuietStderr&) = delete;
 
+    /// For std::atexit, once: if the process is ending inside a QuietStderr scope, restores
+    /// stderr and prints "texsyn ERROR: CONTEXT : what the library printed".
+    static void report_exit();
+
 private:
-    int m_saved = -1;
+    std::string m_context;
+    int m_saved = -1;    ///< the real stderr
+    int m_captured = -1; ///< an anonymous file receiving stderr meanwhile
 };
 
 } // namespace texsyn::cli

@@ -41,7 +41,7 @@ void write_volume_output(CliState& state, const std::string& filename)
     const std::string tmp = state.outputs.add(filename);
     bool ok;
     {
-        QuietStderr quiet;
+        QuietStderr quiet("-o " + filename);
         ok = OIIO::Strutil::iends_with(filename, ".vdb")
             ? write_volume_vdb(tmp, v, error)
             : write_volume_exr(
@@ -49,7 +49,8 @@ void write_volume_output(CliState& state, const std::string& filename)
     }
     if (!ok)
         throw CliError("-o " + filename + " : "
-            + error.substr(error.find(": ") == std::string::npos ? 0 : error.find(": ") + 2));
+            + state.outputs.final_names(
+                error.substr(error.find(": ") == std::string::npos ? 0 : error.find(": ") + 2)));
 }
 
 } // namespace texsyn::cli

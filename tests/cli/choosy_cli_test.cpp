@@ -97,6 +97,16 @@ TEST_F(Cli, BadChoosyRequestsAreRefused)
     expect_failure("stucco.png --choosy:levels=6 -o out.exr",
         "texsyn ERROR: --choosy : levels=6 is too many for the sample (128x128): its coarsest "
         "level would be smaller than the 5x5 neighbourhood (use levels=5 or less)");
+    // Samples too thin for any level name their own size, not their crop's.
+    write_sample("row.png", 3, OIIO::TypeUInt8);
+    const OIIO::ImageBuf thin
+        = OIIO::ImageBufAlgo::cut(read("row.png"), OIIO::ROI(0, 32, 0, 1, 0, 1, 0, 3));
+    ASSERT_TRUE(thin.write((dir / "thin.png").string()));
+    fs::remove(dir / "row.png");
+    expect_failure("thin.png --choosy -o out.exr",
+        "texsyn ERROR: --choosy : the sample (32x1) is smaller than the 5x5 neighbourhood",
+        { "stucco.png", "thin.png" });
+    fs::remove(dir / "thin.png");
     expect_failure("stucco.png --choosy:levels=2:iterations=1,2,3 -o out.exr",
         "texsyn ERROR: --choosy : iterations=1,2,3 : 3 values for levels=2 (give 1..2)");
     expect_failure("stucco.png --choosy:iterations=1,0 -o out.exr",

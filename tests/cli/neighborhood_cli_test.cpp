@@ -118,7 +118,7 @@ TEST_F(Cli, BadApplyMapInputIsRefused)
         "texsyn ERROR: missing.exr: no such file", inputs);
     expect_failure("--apply-map out.exr stucco.png -o x.png",
         "texsyn ERROR: --apply-map out.exr stucco.png : the source map has 3 channels; expected "
-        "2 (x, y) as --neighborhood:map= and --choosy:map= write",
+        "2 (x, y) as --neighborhood:map=, --choosy:map= and --patch:map= write",
         inputs);
     write_sample("small.png", 3, OIIO::TypeUInt8);
     expect_failure("--apply-map coords.exr small.png -o x.png",

@@ -6,13 +6,17 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include <sys/wait.h>
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imagecache.h>
 
 #include <gtest/gtest.h>
+
+#include "../cli/png_bomb.h"
 
 #include <texsyn/recipe.h>
 
@@ -247,6 +251,68 @@ TEST_F(Plugin, BadRecipesFailCleanly)
         }
         EXPECT_FALSE(fs::exists(dir / "x.exr"));
     }
+}
+
+// A recipe's sample that is a decompression bomb, or a recipe beyond the memory limit
+// ($TEXSYN_MAX_MEMORY), is refused before allocating: the host tool gets an error, not a
+// crash or minutes of work.
+TEST_F(Plugin, MemoryLimitsHoldInsideTheHostTools)
+{
+    std::ofstream(dir / "bomb.png", std::ios::binary)
+        << texsyn::test::png_bomb((dir / "s.png").string(), 100000);
+    write("bomb.texsyn", R"({ "sample": "bomb.png", "size": "64x64" })");
+    for (const std::string tool : { "iinfo", "oiiotool" }) {
+        ToolRun r = sh(tool + " bomb.texsyn" + (tool == "oiiotool" ? " -o x.exr" : ""));
+        EXPECT_EQ(r.status, 1) << r.out;
+        EXPECT_NE(
+            r.out.find("bomb.png: its 100000x100000 pixels would need about"), std::string::npos)
+            << r.out;
+    }
+    ToolRun r = sh("TEXSYN_MAX_MEMORY=200M iinfo 's.png.texsyn?size=4096x4096'");
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_NE(r.out.find("size=4096x4096 would need about"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(dir / "x.exr"));
+}
+
+// One OIIO ImageCache shared by 16 threads, as a renderer uses it: each opens recipes
+// through the plugin, four different ones and each of them by four threads at once, and
+// gets exactly the pixels of the recipe run alone. (The ThreadSanitizer build runs this
+// test: scripts/sanitize.sh.)
+TEST_F(Plugin, SixteenThreadsOpenRecipesThroughOneImageCache)
+{
+    OIIO::attribute("plugin_searchpath", TEXSYN_PLUGIN_DIR);
+    std::vector<std::string> names;
+    std::vector<std::string> expected;
+    for (int i = 0; i < 4; ++i) {
+        names.push_back(
+            (dir / "s.png.texsyn").string() + "?size=32x24&iterations=1&seed=" + std::to_string(i));
+        texsyn::Recipe recipe;
+        std::string error;
+        ASSERT_TRUE(texsyn::recipe_from_filename(names.back(), recipe, error)) << error;
+        OIIO::ImageBuf direct;
+        ASSERT_TRUE(texsyn::run_recipe(recipe, direct, nullptr, error)) << error;
+        expected.push_back(OIIO::ImageBufAlgo::computePixelHashSHA1(direct));
+    }
+    auto cache = OIIO::ImageCache::create(false); // private: other tests' state stays out
+    std::vector<std::string> got(16);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 16; ++t)
+        threads.emplace_back([&, t] {
+            const std::string& name = names[size_t(t % 4)];
+            OIIO::ImageSpec spec;
+            if (!cache->get_imagespec(OIIO::ustring(name), spec))
+                return;
+            spec.format = OIIO::TypeFloat;
+            OIIO::ImageBuf buf(spec);
+            if (cache->get_pixels(OIIO::ustring(name), 0, 0, 0, spec.width, 0, spec.height, 0, 1,
+                    OIIO::TypeFloat, buf.localpixels()))
+                got[size_t(t)] = OIIO::ImageBufAlgo::computePixelHashSHA1(buf);
+        });
+    for (std::thread& t : threads)
+        t.join();
+    for (int t = 0; t < 16; ++t)
+        EXPECT_EQ(got[size_t(t)], expected[size_t(t % 4)]) << "thread " << t;
+    OIIO::ImageCache::destroy(cache);
 }
 
 TEST_F(Plugin, PythonOpensARecipe)

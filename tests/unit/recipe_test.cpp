@@ -99,6 +99,20 @@ TEST(Recipe, RejectsBadRecipesNamingTheProblem)
     EXPECT_EQ(error, "seed=18446744073709551615 : out of range 0..2147483647");
 }
 
+// A key given twice is refused, as a REST name with a repeated option is: silently keeping
+// the last value would run something the user did not read.
+TEST(Recipe, DuplicateKeysAreRefused)
+{
+    Recipe r;
+    std::string error;
+    EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "seed": 1, "seed": 2 })", "", r, error));
+    EXPECT_EQ(error, "malformed JSON (duplicate key \"seed\")");
+    EXPECT_FALSE(
+        parse_recipe(R"({ "sample": "a.png", "iterations": 2, "size": "64x64", "iterations": 2 })",
+            "", r, error));
+    EXPECT_EQ(error, "malformed JSON (duplicate key \"iterations\")");
+}
+
 // Deeply nested JSON is refused before the parser recurses into it (it would overflow the
 // stack of the process reading the recipe: stock oiiotool, through the plugin).
 TEST(Recipe, DeepNestingIsRefusedBeforeParsing)

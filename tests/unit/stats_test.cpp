@@ -51,9 +51,10 @@ std::string file_bytes(const TextureStatistics& stats)
     return ss.str();
 }
 
-uint64_t fnv1a(const std::string& s, size_t n)
+// FNV-1a 64 with the standard offset basis (version 2), or version 1's mistyped one.
+uint64_t fnv1a(const std::string& s, size_t n, uint64_t basis = 14695981039346656037ull)
 {
-    uint64_t h = 1469598103934665603ull;
+    uint64_t h = basis;
     for (size_t i = 0; i < n; ++i) {
         h ^= uint8_t(s[i]);
         h *= 1099511628211ull;
@@ -213,13 +214,38 @@ TEST_F(AnalysisFile, DamagedFilesAreRejected)
     expect_rejected(with_valid_checksum(bytes->substr(0, bytes->size() - 12)), "the tables hold");
 }
 
+TEST_F(AnalysisFile, TheChecksumIsStandardFnv1a64)
+{
+    // The last 8 bytes are FNV-1a 64 (offset basis 14695981039346656037) of the rest: the
+    // hash any standard implementation computes.
+    uint64_t stored = 0;
+    std::memcpy(&stored, bytes->data() + bytes->size() - 8, 8);
+    EXPECT_EQ(stored, fnv1a(*bytes, bytes->size() - 8));
+    EXPECT_NE(header_of(*bytes).find("\"version\":2"), std::string::npos);
+}
+
+TEST_F(AnalysisFile, VersionOneFilesWithTheirOldChecksumAreStillRead)
+{
+    std::string v1
+        = with_header(*bytes, replace_once(header_of(*bytes), "\"version\":2", "\"version\":1"));
+    const uint64_t old = fnv1a(v1, v1.size() - 8, 1469598103934665603ull);
+    std::memcpy(&v1[v1.size() - 8], &old, 8);
+    TextureStatistics back;
+    std::string error;
+    EXPECT_TRUE(parse_statistics(v1, "v1.tsa", back, error)) << error;
+    // A version 1 header under a version 2 checksum (or the reverse) is damage.
+    expect_rejected(
+        with_header(*bytes, replace_once(header_of(*bytes), "\"version\":2", "\"version\":1")),
+        "checksum mismatch");
+}
+
 TEST_F(AnalysisFile, WrongVersionsAndInconsistentHeadersAreRejected)
 {
     const std::string h = header_of(*bytes);
-    expect_rejected(with_header(*bytes, replace_once(h, "\"version\":1", "\"version\":2")),
-        "version 2 (this texsyn reads version 1)");
-    expect_rejected(with_header(*bytes, replace_once(h, "\"version\":1", "\"version\":\"1\"")),
-        "malformed header");
+    expect_rejected(with_header(*bytes, replace_once(h, "\"version\":2", "\"version\":3")),
+        "version 3 (this texsyn reads versions 1 to 2)");
+    expect_rejected(with_header(*bytes, replace_once(h, "\"version\":2", "\"version\":\"2\"")),
+        "invalid header: version is not an integer");
     expect_rejected(with_header(*bytes, h.substr(0, h.size() - 1)), "malformed header");
     expect_rejected(
         with_header(*bytes, replace_once(h, "\"orientations\":4", "\"orientations\":3")),
@@ -236,6 +262,20 @@ TEST_F(AnalysisFile, WrongVersionsAndInconsistentHeadersAreRejected)
         "alpha_channel=7 is not a channel");
     expect_rejected(with_header(*bytes, replace_once(h, "\"n\":3", "\"n\":2")),
         "the colour transform has 2 channels, expected 3");
+}
+
+TEST_F(AnalysisFile, CountsMustBeNonNegativeIntegersAndKeysUnique)
+{
+    const std::string h = header_of(*bytes);
+    expect_rejected(with_header(*bytes, replace_once(h, "\"pixels\":2304", "\"pixels\":2304.5")),
+        "invalid header: pixels is not a count (2304.5)");
+    expect_rejected(with_header(*bytes, replace_once(h, "\"pixels\":2304", "\"pixels\":-1")),
+        "invalid header: pixels is not a count (-1)");
+    expect_rejected(with_header(*bytes, replace_once(h, "\"width\":48", "\"width\":48.0")),
+        "invalid header: width is not an integer (48.0)");
+    expect_rejected(
+        with_header(*bytes, replace_once(h, "\"version\":2", "\"version\":2,\"version\":2")),
+        "malformed header: duplicate key \"version\"");
 }
 
 TEST_F(AnalysisFile, UnsortedOrNonFiniteTablesAreRejected)

@@ -16,7 +16,8 @@ namespace texsyn {
 /// OIIO's shared ImageCache, so it is safe inside an OIIO format plugin. If `native` is not
 /// null it receives the file's own spec (pixel type included). Fails (false, "FILE:
 /// reason") if the file is missing, not a regular file, unreadable, truncated or not an
-/// image, or if its pixels cannot be allocated.
+/// image, or if its pixels would exceed the memory limit (texsyn/memory.h; checked from
+/// the header, before any pixel is decoded) or cannot be allocated.
 bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error,
     OIIO::ImageSpec* native = nullptr);
 
@@ -27,19 +28,50 @@ bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& e
 bool check_regular_file(const std::string& filename, const std::string& what, std::string& error);
 
 /// A path in the same directory as `filename`, with the same extension (so OIIO picks the
-/// same format), that does not exist yet: write there, then commit_file().
+/// same format), that does not exist yet: write there, then commit_file() or
+/// discard_temporary(). Named ".STEM.texsyn-tmpPID-HOST-N.EXT" (within NAME_MAX) and
+/// registered until committed or discarded, so that remove_live_temporaries() finds it.
+/// The first call for a folder removes the temporaries that dead processes of this host
+/// left there (SIGKILL cannot be handled).
 std::string temporary_path_for(const std::string& filename);
 
 /// Renames `temporary` over `filename` (atomic on one file system); removes `temporary`
 /// and fails if the rename fails.
 bool commit_file(const std::string& temporary, const std::string& filename, std::string& error);
 
+/// Removes a temporary file that will not be committed (if it exists).
+void discard_temporary(const std::string& temporary);
+
+/// Removes every temporary file not yet committed or discarded. Async-signal-safe: for
+/// signal handlers and exit handlers, just before the process ends.
+void remove_live_temporaries() noexcept;
+
+/// Flushes a written file to the disk (fsync) and checks it is not empty and has no
+/// holes (a writer that ignores a full disk leaves both). False with a reason otherwise.
+bool sync_written_file(const std::string& path, std::string& reason);
+
+/// Whether the image file at `path` reads back with `expected`'s width and height and
+/// every pixel decodes (a truncated file does not). False with a reason otherwise.
+bool verify_image_file(
+    const std::string& path, const OIIO::ImageSpec& expected, std::string& reason);
+
+/// Writes `bytes` to `path` (created or truncated), checking every write, and fsyncs it.
+/// False with a reason ("write error (No space left on device)") otherwise.
+bool write_bytes(const std::string& path, const std::string& bytes, std::string& reason);
+
 /// Whether `a` and `b` name the same existing file (after resolving links and "..").
 bool same_file(const std::string& a, const std::string& b);
 
+/// Writes `image` to `path` (no temporary: for a path that is itself one) and checks the
+/// result as write_image_atomic does; on failure removes `path` and fails (false, "PATH:
+/// cannot write (reason)").
+bool write_image_verified(const OIIO::ImageBuf& image, const std::string& path,
+    OIIO::TypeDesc format, std::string& error);
+
 /// Writes `image` to `filename` atomically (temporary file + rename): a failed write
-/// leaves no file behind and never an incomplete one. `format` is the pixel type on disk
-/// (TypeUnknown = the buffer's). Fails (false, "FILE: reason").
+/// leaves no file behind and never an incomplete one: the file is synced to the disk
+/// and read back completely (sync_written_file, verify_image_file) before the rename. `format` is
+/// the pixel type on disk (TypeUnknown = the buffer's). Fails (false, "FILE: reason").
 bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename,
     OIIO::TypeDesc format, std::string& error);
 

@@ -49,7 +49,7 @@ struct TextureStatistics {
 };
 
 /// The analysis file format's version (the "version" key of the header).
-constexpr int analysis_file_version = 1;
+constexpr int analysis_file_version = 2;
 
 /// Writes `stats` to `filename` (atomically: temporary file, then rename). False with a
 /// message on an I/O error.

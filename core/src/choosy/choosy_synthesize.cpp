@@ -33,6 +33,8 @@ int levels_allowed(int w, int h, int wanted)
     return l;
 }
 
+// The sample's size `sw` x `sh` as given (its crop to a multiple of 2^(levels-1) has the
+// same coarsest level).
 bool check_sizes(int sw, int sh, int w, int h, const ChoosyOptions& opt, std::string& error)
 {
     const int unit = 1 << (opt.levels - 1);
@@ -122,7 +124,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyO
     const int sw = in.width(), sh = in.height();
     const int cw = std::max(sw / unit * unit, 1), chh = std::max(sh / unit * unit, 1);
     const int w = opt.width ? opt.width : cw, h = opt.height ? opt.height : chh;
-    if (!check_sizes(sw / unit * unit, sh / unit * unit, w, h, opt, error)
+    if (!check_sizes(sw, sh, w, h, opt, error)
         || !detail::check_memory(choosy_memory_estimate(cw, chh, in.nchannels(), w, h, opt),
             "size=" + size_text(w, h), error)) {
         dst.errorfmt("{}", error);

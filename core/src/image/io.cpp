@@ -2,14 +2,15 @@
 #include <texsyn/io.h>
 
 #include <algorithm>
-#include <atomic>
 #include <filesystem>
 #include <system_error>
 
-#include <unistd.h>
-
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+
+#include <texsyn/memory.h>
+
+#include "io_pvt.h"
 
 namespace texsyn {
 
@@ -49,11 +50,8 @@ bool read_image(
     auto fail = [&](std::string msg) {
         if (msg.empty())
             msg = OIIO::geterror();
-        error = filename + ": cannot read image" + (msg.empty() ? "" : " (" + msg + ")");
         // OIIO messages can span lines; the tool prints one line per error.
-        for (char& c : error)
-            if (c == '\n')
-                c = ' ';
+        error = one_line(filename + ": cannot read image" + (msg.empty() ? "" : " (" + msg + ")"));
         return false;
     };
     auto in = OIIO::ImageInput::open(filename, &config);
@@ -62,6 +60,16 @@ bool read_image(
     OIIO::ImageSpec spec = in->spec();
     spec.format = OIIO::TypeFloat;
     spec.channelformats.clear();
+    // Refuse from the header, before any pixel is allocated or decoded: a few bytes of
+    // PNG can claim 100000x100000 pixels.
+    std::string refusal;
+    if (!check_memory(size_t(spec.image_bytes()),
+            "its " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
+                + (spec.depth > 1 ? "x" + std::to_string(spec.depth) : "") + " pixels",
+            refusal)) {
+        error = filename + ": " + refusal;
+        return false;
+    }
     OIIO::ImageBuf buf(spec);
     if (!buf.localpixels()) // OIIO logs a failed allocation and leaves no pixels
         return fail("not enough memory for its " + std::to_string(spec.width) + "x"
@@ -75,38 +83,25 @@ bool read_image(
     return true;
 }
 
-std::string temporary_path_for(const std::string& filename)
-{
-    static std::atomic<unsigned> counter { 0 };
-    fs::path p(filename);
-    // Within NAME_MAX (255) even for a long name: the stem is shortened, never the marker,
-    // pid and extension that make the file recognisable.
-    const std::string tag = ".texsyn-tmp" + std::to_string(::getpid()) + "-"
-        + std::to_string(counter++) + p.extension().string();
-    std::string stem = p.stem().string();
-    if (1 + stem.size() + tag.size() > 255)
-        stem.resize(255 - 1 - std::min<size_t>(tag.size(), 254));
-    const std::string name = "." + stem + tag;
-    return (p.parent_path() / name).string();
-}
-
-bool commit_file(const std::string& temporary, const std::string& filename, std::string& error)
-{
-    std::error_code ec;
-    fs::rename(temporary, filename, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        error = filename + ": cannot write (" + ec.message() + ")";
-        return false;
-    }
-    return true;
-}
-
 bool same_file(const std::string& a, const std::string& b)
 {
     std::error_code ec;
     bool eq = fs::equivalent(a, b, ec);
     return !ec && eq;
+}
+
+bool write_image_verified(
+    const OIIO::ImageBuf& image, const std::string& path, OIIO::TypeDesc format, std::string& error)
+{
+    std::string reason;
+    if (!image.write(path, format))
+        reason = one_line(image.geterror());
+    else if (sync_written_file(path, reason) && verify_image_file(path, image.spec(), reason))
+        return true;
+    std::error_code ec;
+    fs::remove(path, ec);
+    error = path + ": cannot write (" + (reason.empty() ? "unknown error" : reason) + ")";
+    return false;
 }
 
 bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename,
@@ -120,23 +115,21 @@ bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename
     }
     auto out = OIIO::ImageOutput::create(filename);
     if (!out) {
-        (void)OIIO::geterror();
-        error = filename + ": cannot write (no image format for extension '"
-            + fs::path(filename).extension().string() + "')";
+        const std::string why = one_line(OIIO::geterror());
+        error = filename + ": cannot write ("
+            + (why.empty() ? "no image format for extension '"
+                        + fs::path(filename).extension().string() + "'"
+                           : why)
+            + ")";
         return false;
     }
     out.reset();
-    std::string tmp = temporary_path_for(filename);
-    if (!image.write(tmp, format)) {
-        std::string msg = image.geterror();
-        for (char& c : msg)
-            if (c == '\n')
-                c = ' ';
-        fs::remove(tmp, ec);
-        error = filename + ": cannot write (" + msg + ")";
-        return false;
-    }
-    return commit_file(tmp, filename, error);
+    const std::string tmp = temporary_path_for(filename);
+    if (write_image_verified(image, tmp, format, error))
+        return commit_file(tmp, filename, error);
+    discard_temporary(tmp);
+    error = filename + error.substr(tmp.size());
+    return false;
 }
 
 bool write_multipart_exr(const std::string& filename, const std::vector<OIIO::ImageSpec>& specs,
@@ -144,9 +137,8 @@ bool write_multipart_exr(const std::string& filename, const std::vector<OIIO::Im
 {
     const std::string tmp = temporary_path_for(filename);
     auto fail = [&](const std::string& msg) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        error = filename + ": cannot write (" + msg + ")";
+        discard_temporary(tmp);
+        error = filename + ": cannot write (" + one_line(msg) + ")";
         return false;
     };
     auto out = OIIO::ImageOutput::create("exr");
@@ -164,6 +156,22 @@ bool write_multipart_exr(const std::string& filename, const std::vector<OIIO::Im
     }
     if (!out->close())
         return fail(out->geterror());
+    std::string reason;
+    if (!sync_written_file(tmp, reason))
+        return fail(reason);
+    // Every part decodes completely: a full disk truncates the last parts.
+    auto in = OIIO::ImageInput::open(tmp);
+    if (!in)
+        return fail("the written file is incomplete (disk full?): " + one_line(OIIO::geterror()));
+    std::vector<float> pixels;
+    for (size_t i = 0; i < specs.size(); ++i) {
+        if (!in->seek_subimage(int(i), 0))
+            return fail("the written file is incomplete (disk full?): part " + std::to_string(i)
+                + " is missing");
+        pixels.resize(size_t(in->spec().image_pixels()) * size_t(in->spec().nchannels));
+        if (!in->read_image(int(i), 0, 0, in->spec().nchannels, OIIO::TypeFloat, pixels.data()))
+            return fail("the written file is incomplete (disk full?): " + one_line(in->geterror()));
+    }
     return commit_file(tmp, filename, error);
 }
 

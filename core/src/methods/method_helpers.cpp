@@ -34,31 +34,6 @@ std::string count_text(int n, const std::string& noun)
     return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
-std::string format_bytes(double bytes)
-{
-    const char* units[] = { "B", "KB", "MB", "GB", "TB", "PB", "EB" };
-    int u = 0;
-    while (bytes >= 1024.0 && u < 6) {
-        bytes /= 1024.0;
-        ++u;
-    }
-    char buf[32];
-    std::snprintf(buf, sizeof(buf), "%.1f %s", bytes, units[u]);
-    return buf;
-}
-
-bool check_memory(size_t need, const std::string& what, std::string& error)
-{
-    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    const size_t have = pages > 0 && page > 0 ? size_t(pages) * size_t(page) : size_t(0);
-    if (have && need > have) {
-        error = what + " would need about " + format_bytes(double(need))
-            + " of memory (this machine has " + format_bytes(double(have)) + ")";
-        return false;
-    }
-    return true;
-}
-
 Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream)
 {
     Plane p(width, height);

@@ -14,6 +14,7 @@
 
 #include <texsyn/fft.h>
 #include <texsyn/image.h>
+#include <texsyn/memory.h>
 #include <texsyn/methods.h>
 #include <texsyn/options.h>
 #include <texsyn/version.h>
@@ -133,12 +134,8 @@ bool check_fft_backend(FftBackend fft, std::string& error);
 /// "1 channel", "3 channels".
 std::string count_text(int n, const std::string& noun);
 
-/// "1.5 GB" style.
-std::string format_bytes(double bytes);
-
-/// False (with "size=WxH would need about … of memory (this machine has …)") if `need`
-/// bytes exceed the machine's physical memory.
-bool check_memory(size_t need, const std::string& what, std::string& error);
+using texsyn::check_memory; // texsyn/memory.h: refuses work beyond the memory limit
+using texsyn::format_bytes;
 
 /// Uniform noise in [0, 1), pixel i from random_uniform(seed, stream, i).
 Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream);

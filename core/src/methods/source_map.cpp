@@ -23,9 +23,10 @@ bool apply(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf&
     }
     const OIIO::ImageSpec& ms = map.spec();
     if (ms.nchannels != 2 || ms.depth > 1) {
-        dst.errorfmt("the source map has {} channels; expected 2 (x, y) as "
-                     "--neighborhood:map= and --choosy:map= write",
-            ms.nchannels);
+        dst.errorfmt("the source map has {}; expected 2 (x, y) as --neighborhood:map=, "
+                     "--choosy:map= and --patch:map= write",
+            ms.depth > 1 ? "depth " + std::to_string(ms.depth)
+                         : detail::count_text(ms.nchannels, "channel"));
         return false;
     }
     const OIIO::ImageSpec& is = image.spec();

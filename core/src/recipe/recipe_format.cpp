@@ -16,7 +16,7 @@
 #include <texsyn/io.h>
 #include <texsyn/stats.h>
 
-#include "json_depth_pvt.h"
+#include "json_strict_pvt.h"
 
 namespace texsyn {
 
@@ -337,17 +337,15 @@ bool Recipe::validate(std::string& error) const
 bool parse_recipe(
     const std::string& text, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
-    constexpr size_t max_depth = 64; // a recipe needs 2
-    if (detail::json_nesting_depth(text, max_depth) > max_depth) {
-        error = "malformed JSON (nested more than " + std::to_string(max_depth) + " deep)";
-        return false;
-    }
     nlohmann::json j;
     try {
-        j = nlohmann::json::parse(text);
+        j = detail::parse_json_strict(text, 64); // a recipe needs 2
     } catch (const nlohmann::json::exception& e) {
         std::string what = e.what();
         error = "malformed JSON (" + what.substr(what.find(' ') + 1) + ")";
+        return false;
+    } catch (const std::exception& e) {
+        error = "malformed JSON (" + std::string(e.what()) + ")";
         return false;
     }
     if (!j.is_object()) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Analysis files (.tsa), format version 1 (docs/analysis-files.md):
+// Analysis files (.tsa), format version 2 (docs/analysis-files.md; version 1 differs only
+// in its checksum's offset basis and is still read):
 //
 //   "texsyn-analysis\n"            16 bytes, the magic
 //   header length                  uint64, little-endian
@@ -11,6 +12,7 @@
 // sample channel, so a synthesis from the file is bit-identical to one from the sample.
 #include <texsyn/stats.h>
 
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -24,7 +26,7 @@
 
 #include <texsyn/io.h>
 
-#include "recipe/json_depth_pvt.h"
+#include "recipe/json_strict_pvt.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "analysis files are little-endian");
 
@@ -37,9 +39,13 @@ constexpr size_t magic_size = sizeof(magic) - 1;
 constexpr uint64_t max_header_bytes = 16u << 20;
 constexpr int max_side = 1 << 16;
 
-uint64_t fnv1a(const char* data, size_t n)
+// FNV-1a 64's offset basis, and the mistyped one (a digit short) version 1 files used.
+constexpr uint64_t fnv_basis = 14695981039346656037ull;
+constexpr uint64_t legacy_fnv_basis = 1469598103934665603ull;
+
+uint64_t fnv1a(const char* data, size_t n, uint64_t basis = fnv_basis)
 {
-    uint64_t h = 1469598103934665603ull;
+    uint64_t h = basis;
     for (size_t i = 0; i < n; ++i) {
         h ^= uint8_t(data[i]);
         h *= 1099511628211ull;
@@ -114,18 +120,47 @@ std::vector<std::string> expected_band_names(PyramidKind kind, int scales, int o
     return names;
 }
 
-// Reads the header into `s` (no tables yet) and the table sizes, in payload order.
-// Throws std::runtime_error with the message on anything inconsistent.
-void parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<size_t>& sizes)
+// `v` as a count: a non-negative integer ("16384.5" or "-1" are refused, not rounded or
+// wrapped). Throws std::runtime_error naming `what`.
+size_t count_of(const nlohmann::json& v, const std::string& what)
+{
+    if (!v.is_number_unsigned())
+        throw std::runtime_error(what + " is not a count (" + v.dump() + ")");
+    return v.get<size_t>();
+}
+
+std::vector<size_t> counts_of(const nlohmann::json& v, const std::string& what)
+{
+    if (!v.is_array())
+        throw std::runtime_error(what + " is not a list of counts");
+    std::vector<size_t> counts;
+    for (const auto& e : v)
+        counts.push_back(count_of(e, what));
+    return counts;
+}
+
+// `v` as an int: an integer within int's range, or throws naming `what`.
+int integer_of(const nlohmann::json& v, const std::string& what)
+{
+    if (!v.is_number_integer() || v.get<int64_t>() < INT32_MIN || v.get<int64_t>() > INT32_MAX
+        || (v.is_number_unsigned() && v.get<uint64_t>() > uint64_t(INT32_MAX)))
+        throw std::runtime_error(what + " is not an integer (" + v.dump() + ")");
+    return v.get<int>();
+}
+
+// Reads the header into `s` (no tables yet) and the table sizes, in payload order, and
+// returns the format version (1 or 2). Throws std::runtime_error with the message on
+// anything inconsistent.
+int parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<size_t>& sizes)
 {
     auto fail = [](const std::string& m) { throw std::runtime_error(m); };
-    const int version = j.at("version").get<int>();
-    if (version != analysis_file_version)
-        fail("version " + std::to_string(version) + " (this texsyn reads version "
+    const int version = integer_of(j.at("version"), "version");
+    if (version != 1 && version != analysis_file_version)
+        fail("version " + std::to_string(version) + " (this texsyn reads versions 1 to "
             + std::to_string(analysis_file_version) + ")");
     const auto& sample = j.at("sample");
-    s.sample_width = sample.at("width").get<int>();
-    s.sample_height = sample.at("height").get<int>();
+    s.sample_width = integer_of(sample.at("width"), "width");
+    s.sample_height = integer_of(sample.at("height"), "height");
     s.source = sample.at("source").get<std::string>();
     s.colorspace = sample.at("colorspace").get<std::string>();
     s.sample_format = sample.at("format").get<std::string>();
@@ -139,8 +174,8 @@ void parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<siz
     if (kind != "steerable" && kind != "laplacian")
         fail("pyramid kind '" + kind + "' is not steerable or laplacian");
     s.pyramid = kind == "steerable" ? PyramidKind::Steerable : PyramidKind::Laplacian;
-    s.scales = pyr.at("scales").get<int>();
-    s.orientations = pyr.at("orientations").get<int>();
+    s.scales = integer_of(pyr.at("scales"), "scales");
+    s.orientations = integer_of(pyr.at("orientations"), "orientations");
     if (s.scales < 1 || s.scales > max_pyramid_scales(s.sample_width, s.sample_height))
         fail("scales=" + std::to_string(s.scales) + " does not fit the sample size");
     if (s.orientations < 1 || s.orientations > 8)
@@ -152,14 +187,14 @@ void parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<siz
     const int nc = s.nchannels();
     if (nc < 1 || nc > 64)
         fail(std::to_string(nc) + " channels (expected 1..64)");
-    s.alpha_channel = j.at("alpha_channel").get<int>();
+    s.alpha_channel = integer_of(j.at("alpha_channel"), "alpha_channel");
     if (s.alpha_channel != -1 && (s.alpha_channel < 1 || s.alpha_channel >= nc))
         fail("alpha_channel=" + std::to_string(s.alpha_channel) + " is not a channel");
     s.unassociated_alpha = j.at("unassociated_alpha").get<bool>();
 
     const auto& color = j.at("color");
     ColorTransform& ct = s.color;
-    ct.n = color.at("n").get<int>();
+    ct.n = integer_of(color.at("n"), "n");
     const int ncolor = s.alpha_channel >= 0 ? s.alpha_channel : nc;
     if (ct.n != ncolor)
         fail("the colour transform has " + std::to_string(ct.n) + " channels, expected "
@@ -189,8 +224,8 @@ void parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<siz
         c.mean = jc.at("mean").get<float>();
         if (!std::isfinite(c.mean))
             fail("component " + c.name + " has a non-finite mean");
-        const size_t npix = jc.at("pixels").get<size_t>();
-        const auto bands = jc.at("bands").get<std::vector<size_t>>();
+        const size_t npix = count_of(jc.at("pixels"), "pixels");
+        const auto bands = counts_of(jc.at("bands"), "bands");
         if (c.constant) {
             if (npix != 0 || !bands.empty())
                 fail("constant component " + c.name + " has tables");
@@ -212,7 +247,7 @@ void parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<siz
         }
         s.components.push_back(std::move(c));
     }
-    const auto channels = j.at("channel_tables").get<std::vector<size_t>>();
+    const auto channels = counts_of(j.at("channel_tables"), "channel_tables");
     if (channels.size() != size_t(nc))
         fail("expected " + std::to_string(nc) + " channel tables");
     for (size_t n : channels) {
@@ -221,6 +256,7 @@ void parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<siz
                 + std::to_string(pixels) + " pixels");
         sizes.push_back(n);
     }
+    return version;
 }
 
 // A table of `n` floats at `p`: finite and sorted ascending, or throws.
@@ -260,15 +296,11 @@ bool write_statistics(
     append_u64(bytes, fnv1a(bytes.data(), bytes.size()));
 
     const std::string temporary = temporary_path_for(filename);
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out.write(bytes.data(), std::streamsize(bytes.size()));
-        out.close();
-        if (!out) {
-            std::remove(temporary.c_str());
-            error = filename + ": could not write the analysis file";
-            return false;
-        }
+    std::string reason;
+    if (!write_bytes(temporary, bytes, reason)) {
+        discard_temporary(temporary);
+        error = filename + ": cannot write the analysis file (" + reason + ")";
+        return false;
     }
     return commit_file(temporary, filename, error);
 }
@@ -290,23 +322,23 @@ bool parse_statistics(
         return fail("truncated analysis file (header)");
     const size_t payload_at = header_at + size_t(header_size);
     const size_t checksum_at = bytes.size() - 8;
-    if (fnv1a(bytes.data(), checksum_at) != read_u64(bytes.data() + checksum_at))
+    const uint64_t stored = read_u64(bytes.data() + checksum_at);
+    const bool legacy = fnv1a(bytes.data(), checksum_at, legacy_fnv_basis) == stored;
+    if (!legacy && fnv1a(bytes.data(), checksum_at) != stored)
         return fail("corrupted or truncated analysis file (checksum mismatch)");
-    constexpr size_t max_depth = 64; // a header needs 3
-    if (detail::json_nesting_depth(
-            std::string_view(
-                reinterpret_cast<const char*>(bytes.data()) + header_at, size_t(header_size)),
-            max_depth)
-        > max_depth)
-        return fail("malformed header: nested more than 64 deep");
+    nlohmann::json header;
+    try {
+        header = detail::parse_json_strict(
+            std::string_view(bytes.data() + header_at, size_t(header_size)), 64); // needs 3
+    } catch (const std::exception& e) {
+        return fail(std::string("malformed header: ") + e.what());
+    }
     TextureStatistics s;
     std::vector<size_t> sizes;
     try {
-        const nlohmann::json header = nlohmann::json::parse(
-            bytes.begin() + std::ptrdiff_t(header_at), bytes.begin() + std::ptrdiff_t(payload_at));
-        parse_header(header, s, sizes);
-    } catch (const nlohmann::json::exception& e) {
-        return fail(std::string("malformed header: ") + e.what());
+        // Version 1 files carry the checksum with version 1's basis, later ones FNV-1a's.
+        if ((parse_header(header, s, sizes) == 1) != legacy)
+            return fail("corrupted or truncated analysis file (checksum mismatch)");
     } catch (const std::exception& e) {
         return fail(std::string("invalid header: ") + e.what());
     }

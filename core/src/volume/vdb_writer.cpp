@@ -5,12 +5,15 @@
 
 #include <filesystem>
 #include <new>
+#include <stdexcept>
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Dense.h>
 
 #include <texsyn/io.h>
+
+#include "image/io_pvt.h"
 
 namespace texsyn {
 
@@ -98,21 +101,41 @@ void write_grids(const std::string& path, const PlanarVolume& v)
     file.close();
 }
 
+// OpenVDB writes through a std::ofstream whose errors it does not check: read every grid
+// back, so that a file truncated by a full disk is not committed.
+void read_back(const std::string& path)
+{
+    try {
+        openvdb::io::File file(path);
+        file.open(false);
+        for (auto name = file.beginName(); name != file.endName(); ++name)
+            file.readGrid(name.gridName());
+        file.close();
+    } catch (const std::exception& e) {
+        throw std::runtime_error(
+            "the written file is incomplete (disk full?): " + one_line(e.what()));
+    }
+}
+
 } // namespace
 
 bool write_volume_vdb(const std::string& filename, const PlanarVolume& v, std::string& error)
 {
     const std::string tmp = temporary_path_for(filename);
+    std::string reason;
     try {
         write_grids(tmp, v);
-        return commit_file(tmp, filename, error);
+        if (sync_written_file(tmp, reason)) {
+            read_back(tmp);
+            return commit_file(tmp, filename, error);
+        }
+        error = filename + ": cannot write (" + reason + ")";
     } catch (const std::bad_alloc&) {
         error = filename + ": out of memory writing the OpenVDB file";
     } catch (const std::exception& e) {
-        error = filename + ": " + e.what();
+        error = filename + ": cannot write (" + one_line(e.what()) + ")";
     }
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
+    discard_temporary(tmp);
     return false;
 }
 

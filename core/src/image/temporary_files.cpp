@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: Apache-2.0
+// Temporary output files: named so that their owner (host and pid) is recognisable,
+// registered while they exist so that a signal handler or an exit() deep inside an image
+// library can remove them, and committed by rename.
+#include <texsyn/io.h>
+
+#include <algorithm>
+#include <atomic>
+#include <climits>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <set>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace texsyn {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* marker = ".texsyn-tmp";
+
+// The live temporaries, readable from a signal handler: fixed slots, no allocation.
+struct Slot {
+    std::atomic<int> state { 0 }; // 0 free, 1 being filled, 2 live
+    char path[PATH_MAX];
+};
+constexpr int nslots = 64;
+Slot slots[nslots];
+
+void register_live(const std::string& path)
+{
+    if (path.size() >= PATH_MAX)
+        return;
+    for (Slot& s : slots) {
+        int expected = 0;
+        if (s.state.compare_exchange_strong(expected, 1)) {
+            std::memcpy(s.path, path.c_str(), path.size() + 1);
+            s.state.store(2, std::memory_order_release);
+            return;
+        }
+    }
+}
+
+void unregister_live(const std::string& path)
+{
+    for (Slot& s : slots) {
+        if (s.state.load(std::memory_order_acquire) == 2 && path == s.path) {
+            s.state.store(0, std::memory_order_release);
+            return;
+        }
+    }
+}
+
+// Eight hex digits naming this host, so that a folder shared between machines never sees
+// one host remove another's live temporary.
+const std::string& host_tag()
+{
+    static const std::string tag = [] {
+        char name[256] = {};
+        ::gethostname(name, sizeof(name) - 1);
+        uint32_t h = 2166136261u; // FNV-1a 32
+        for (const char* p = name; *p; ++p)
+            h = (h ^ uint8_t(*p)) * 16777619u;
+        char buf[9];
+        std::snprintf(buf, sizeof(buf), "%08x", h);
+        return std::string(buf);
+    }();
+    return tag;
+}
+
+// The pid in a temporary name of this host (".STEM.texsyn-tmpPID-HOST-N.EXT"), or 0.
+long stale_owner(const std::string& name)
+{
+    if (name.empty() || name[0] != '.')
+        return 0;
+    const size_t at = name.rfind(marker);
+    if (at == std::string::npos)
+        return 0;
+    const char* p = name.c_str() + at + std::strlen(marker);
+    char* end = nullptr;
+    const long pid = std::strtol(p, &end, 10);
+    if (pid <= 0 || *end != '-' || std::strncmp(end + 1, host_tag().c_str(), 8) != 0
+        || end[9] != '-')
+        return 0;
+    return pid;
+}
+
+// Removes, once per folder and process, the temporaries that processes of this host left
+// behind when they died without cleaning up (SIGKILL, power loss).
+void remove_stale_temporaries(const fs::path& folder)
+{
+    static std::mutex mutex;
+    static std::set<std::string> visited;
+    std::error_code ec;
+    const std::string key = fs::absolute(folder.empty() ? fs::path(".") : folder, ec).string();
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!visited.insert(key).second)
+            return;
+    }
+    for (fs::directory_iterator it(key, ec), end; !ec && it != end; it.increment(ec)) {
+        const long pid = stale_owner(it->path().filename().string());
+        if (pid > 0 && pid != long(::getpid()) && ::kill(pid_t(pid), 0) != 0 && errno == ESRCH
+            && it->is_regular_file(ec)) {
+            std::error_code ignored;
+            fs::remove(it->path(), ignored);
+        }
+    }
+}
+
+} // namespace
+
+std::string temporary_path_for(const std::string& filename)
+{
+    static std::atomic<unsigned> counter { 0 };
+    fs::path p(filename);
+    remove_stale_temporaries(p.parent_path());
+    // Within NAME_MAX (255) even for a long name: the stem is shortened, never the marker,
+    // owner and extension that make the file recognisable.
+    const std::string tag = marker + std::to_string(::getpid()) + "-" + host_tag() + "-"
+        + std::to_string(counter++) + p.extension().string();
+    std::string stem = p.stem().string();
+    if (1 + stem.size() + tag.size() > 255)
+        stem.resize(255 - 1 - std::min<size_t>(tag.size(), 254));
+    const std::string path = (p.parent_path() / ("." + stem + tag)).string();
+    std::error_code ec;
+    register_live(fs::absolute(path, ec).string());
+    return path;
+}
+
+void discard_temporary(const std::string& temporary)
+{
+    std::error_code ec;
+    fs::remove(temporary, ec);
+    unregister_live(fs::absolute(temporary, ec).string());
+}
+
+bool commit_file(const std::string& temporary, const std::string& filename, std::string& error)
+{
+    std::error_code ec;
+    fs::rename(temporary, filename, ec);
+    if (ec) {
+        discard_temporary(temporary);
+        error = filename + ": cannot write (" + ec.message() + ")";
+        return false;
+    }
+    unregister_live(fs::absolute(temporary, ec).string());
+    return true;
+}
+
+void remove_live_temporaries() noexcept
+{
+    for (Slot& s : slots)
+        if (s.state.load(std::memory_order_acquire) == 2)
+            ::unlink(s.path);
+}
+
+} // namespace texsyn

@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: Apache-2.0
+// The tool under faults (docs/robustness.md): a full disk, signals, a killed process's
+// debris, memory limits and decompression bombs, libraries that end the process, and
+// oversized arguments. Each ends in one error line, a non-zero exit and no file left
+// behind, never in a success with a broken file.
+#include "cli_fixture.h"
+#include "png_bomb.h"
+
+#include <chrono>
+#include <csignal>
+#include <thread>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace {
+
+class Robustness : public Cli {
+protected:
+    // Runs `args` with the file-size limit `kb` (ulimit -f): every write past it fails as
+    // on a full disk (EFBIG). stderr.txt stays far below the limit.
+    CliRun texsyn_with_file_limit(const std::string& args, int kb)
+    {
+        return texsyn(args, "ulimit -f " + std::to_string(kb) + " &&");
+    }
+
+    // Names in the directory other than `inputs` (temporaries included: they start with '.').
+    void expect_only(std::initializer_list<std::string> inputs, const std::string& context)
+    {
+        const auto left = outputs(inputs);
+        EXPECT_TRUE(left.empty()) << context << ": left " << left.front();
+    }
+
+    // Starts the tool on `args` (stderr to err.txt) and returns its pid.
+    pid_t spawn(const std::vector<std::string>& args)
+    {
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            if (::chdir(dir.c_str()) != 0)
+                ::_exit(127);
+            const int err = ::open("err.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            ::dup2(err, STDERR_FILENO);
+            std::vector<char*> argv { const_cast<char*>(TEXSYN_EXE) };
+            for (const std::string& a : args)
+                argv.push_back(const_cast<char*>(a.c_str()));
+            argv.push_back(nullptr);
+            ::execv(TEXSYN_EXE, argv.data());
+            ::_exit(127);
+        }
+        return pid;
+    }
+
+    // The name of a temporary file of the tool in the directory, waiting up to a minute
+    // for one to appear; "" if none does.
+    std::string wait_for_temporary()
+    {
+        for (int i = 0; i < 6000; ++i) {
+            for (auto& e : fs::directory_iterator(dir)) {
+                const std::string n = e.path().filename().string();
+                if (n.find(".texsyn-tmp") != std::string::npos)
+                    return n;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        return "";
+    }
+
+    // A tool run that writes a.exr early and then synthesizes for several seconds more:
+    // its temporary a.exr exists for that long.
+    static std::vector<std::string> slow_run()
+    {
+        return { "stucco.png", "--pyramid:size=64x64:iterations=1", "-o", "a.exr",
+            "--pyramid:size=2048x2048:iterations=40", "-o", "b.exr" };
+    }
+};
+
+} // namespace
+
+// A full disk while writing: every output kind fails with one line naming the output, and
+// neither the output nor its temporary file is left (the PNG, TGA, VDB and cascade cases
+// used to end in success with a truncated, empty or sparse file; the JPEG one left its
+// temporary).
+TEST_F(Robustness, AFullDiskFailsEveryWriterCleanly)
+{
+    ASSERT_EQ(
+        texsyn("stucco.png --neighborhood:size=64x64:levels=2:map=coords.exr -o n.png").status, 0);
+    const std::string pyramid = "stucco.png --pyramid:size=256x256:iterations=1 ";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        { pyramid + "-o out.png", "-o out.png : cannot write (" },
+        { pyramid + "-d uint16 -o out16.png", "-o out16.png : cannot write (" },
+        { pyramid + "-o out.tga", "-o out.tga : cannot write (" },
+        { pyramid + "-o out.tif", "-o out.tif : cannot write (" },
+        { pyramid + "-d float -o out.exr", "-o out.exr : cannot write (" },
+        { pyramid + "--subbands -d float -o bands.exr", "-o bands.exr : cannot write (" },
+        { pyramid + "-o out.jpg", "-o out.jpg : " },
+        { "--cascade:size=256x256 -o cascade.png", "-o cascade.png : cannot write (" },
+        { "stucco.png --analyze -o a.tsa", "-o a.tsa : cannot write the analysis file (" },
+        { "stucco.png --solid:size=32x32x32:iterations=1 -o v.vdb", "-o v.vdb : cannot write (" },
+        { "stucco.png --solid:size=32x32x32:iterations=1 -o v.exr", "-o v.exr : cannot write (" },
+        { "--apply-map coords.exr stucco.png -d uint16 -o applied.png",
+            "-o applied.png : cannot write (" },
+        { "stucco.png --neighborhood:size=128x128:levels=2:map=m.exr -o n2.exr",
+            "--neighborhood : map=" },
+    };
+    for (const auto& [args, message] : cases) {
+        const CliRun r = texsyn_with_file_limit(args, 8);
+        EXPECT_EQ(r.status, 1) << args << ": " << r.err;
+        EXPECT_EQ(r.first_err_line().rfind("texsyn ERROR: " + message, 0), 0u)
+            << args << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+        expect_only({ "stucco.png", "coords.exr", "n.png" }, args);
+    }
+}
+
+// Without the limit the same outputs are written and read back: the checks that catch a
+// full disk do not refuse good files of any writer.
+TEST_F(Robustness, TheWriteChecksAcceptEveryGoodFile)
+{
+    const std::string pyramid = "stucco.png --pyramid:size=64x64:iterations=1 ";
+    for (const std::string out :
+        { "out.png", "out.tga", "out.tif", "out.jpg", "out.exr", "out.bmp", "out.tx", "out.hdr" }) {
+        const CliRun r = texsyn(pyramid + "-o " + out);
+        EXPECT_EQ(r.status, 0) << out << ": " << r.err;
+        EXPECT_TRUE(fs::exists(dir / out)) << out;
+    }
+    EXPECT_EQ(texsyn("stucco.png --solid:size=16x16x16:iterations=1 -o v.vdb").status, 0);
+    EXPECT_EQ(texsyn("stucco.png --analyze -o a.tsa").status, 0);
+    expect_only({ "stucco.png", "out.png", "out.tga", "out.tif", "out.jpg", "out.exr", "out.bmp",
+                    "out.tx", "out.hdr", "v.vdb", "a.tsa" },
+        "good writes");
+}
+
+// SIGINT, SIGTERM and SIGHUP while a temporary output exists: the tool stops at once with
+// 128 + the signal's number and removes every temporary.
+TEST_F(Robustness, SignalsStopTheRunAndRemoveTemporaries)
+{
+    for (int sig : { SIGINT, SIGTERM, SIGHUP }) {
+        const pid_t pid = spawn(slow_run());
+        ASSERT_GT(pid, 0);
+        const std::string tmp = wait_for_temporary();
+        ASSERT_FALSE(tmp.empty()) << "signal " << sig << ": no temporary appeared";
+        const auto sent = std::chrono::steady_clock::now();
+        ::kill(pid, sig);
+        int status = 0;
+        ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+        const double seconds
+            = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+        EXPECT_LT(seconds, 1.0) << "signal " << sig;
+        ASSERT_TRUE(WIFEXITED(status)) << "signal " << sig;
+        EXPECT_EQ(WEXITSTATUS(status), 128 + sig);
+        fs::remove(dir / "err.txt");
+        expect_only({ "stucco.png" }, "signal " + std::to_string(sig));
+    }
+}
+
+// SIGKILL cannot be handled: its temporary stays, recognisable by name, host and pid, and
+// the next run into the folder removes it. A live process's temporary is left alone.
+TEST_F(Robustness, TheNextRunRemovesTheTemporariesOfKilledProcesses)
+{
+    const pid_t pid = spawn(slow_run());
+    ASSERT_GT(pid, 0);
+    const std::string tmp = wait_for_temporary();
+    ASSERT_FALSE(tmp.empty());
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    fs::remove(dir / "err.txt");
+    ASSERT_TRUE(fs::exists(dir / tmp));
+    // The same name with this (live) test's pid: another process's work in progress.
+    const std::string pid_text = std::to_string(pid);
+    std::string live = tmp;
+    live.replace(live.find(".texsyn-tmp") + 11, pid_text.size(), std::to_string(::getpid()));
+    fs::copy_file(dir / tmp, dir / live);
+
+    const CliRun r = texsyn("stucco.png --pyramid:size=64x64:iterations=1 -o c.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_FALSE(fs::exists(dir / tmp)) << tmp;
+    EXPECT_TRUE(fs::exists(dir / live)) << live;
+    fs::remove(dir / live);
+    expect_only({ "stucco.png", "c.exr" }, "after the next run");
+}
+
+// A decompression bomb (a PNG header claiming 100000x100000 pixels with a few bytes of
+// data) is refused from its header, before any pixel is allocated; --max-memory lowers
+// the limit, so a 20000x20000 claim is refused under 1G.
+TEST_F(Robustness, ImageHeadersBeyondTheMemoryLimitAreRefused)
+{
+    {
+        std::ofstream(dir / "bomb.png", std::ios::binary)
+            << texsyn::test::png_bomb(sample_path("stucco_yellow.png"), 100000);
+        std::ofstream(dir / "bomb20k.png", std::ios::binary)
+            << texsyn::test::png_bomb(sample_path("stucco_yellow.png"), 20000);
+    }
+    const auto inputs
+        = { std::string("stucco.png"), std::string("bomb.png"), std::string("bomb20k.png") };
+    expect_failure_starting("bomb.png --pyramid -o out.exr",
+        "texsyn ERROR: bomb.png: its 100000x100000 pixels would need about 111.8 GB of memory",
+        inputs);
+    const auto start = std::chrono::steady_clock::now();
+    expect_failure_starting("--max-memory 1G bomb20k.png --pyramid -o out.exr",
+        "texsyn ERROR: bomb20k.png: its 20000x20000 pixels would need about 4.5 GB of memory "
+        "(only ",
+        inputs);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    expect_failure_starting("--apply-map bomb.png stucco.png -o out.exr",
+        "texsyn ERROR: bomb.png: its 100000x100000 pixels would need about", inputs);
+}
+
+// --max-memory bounds the synthesis too, and the refusal is the only line printed (no
+// library debug output).
+TEST_F(Robustness, MaxMemoryRefusesBeforeAllocating)
+{
+    expect_failure_starting("--max-memory 300M stucco.png --pyramid:size=4096x4096 -o out.exr",
+        "texsyn ERROR: --pyramid : size=4096x4096 would need about ");
+    const CliRun r = texsyn("--max-memory 300M --cascade:size=4096x4096 -o out.png");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(
+        r.first_err_line().rfind("texsyn ERROR: --cascade : size=4096x4096 would need about ", 0),
+        0u)
+        << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.first_err_line().find("see --max-memory"), std::string::npos) << r.err;
+    for (const std::string bad : { "lots", "0", "-5G", "12Q", "150%" })
+        expect_failure_starting("--max-memory " + bad + " stucco.png --pyramid -o out.exr",
+            "texsyn ERROR: --max-memory " + bad
+                + " : expected a memory size such as 8G, 512M, 1500000000 or 50%");
+    EXPECT_EQ(
+        texsyn("--max-memory 2G stucco.png --pyramid:size=64x64:iterations=1 -o ok.exr").status, 0);
+}
+
+// Under an address-space limit (ulimit -v) an 8K sample's float pixels do not fit: the read
+// is refused with the estimate, where it used to crash in the allocation.
+TEST_F(Robustness, AnAddressSpaceLimitIsRespectedWhenReading)
+{
+    OIIO::ImageBuf big(OIIO::ImageSpec(8192, 8192, 3, OIIO::TypeUInt8));
+    const float grey[3] = { 0.5f, 0.4f, 0.3f };
+    OIIO::ImageBufAlgo::fill(big, grey);
+    ASSERT_TRUE(big.write((dir / "big.png").string()));
+    const CliRun r = texsyn("big.png --pyramid -o out.exr", "ulimit -v 700000 &&");
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_EQ(
+        r.first_err_line().rfind(
+            "texsyn ERROR: big.png: its 8192x8192 pixels would need about 768.0 MB of memory", 0),
+        0u)
+        << r.err;
+    expect_only({ "stucco.png", "big.png" }, "ulimit -v");
+}
+
+// Errors echo arguments; a 100 kB value is cut to a readable length.
+TEST_F(Robustness, HugeArgumentsAreCutInErrorLines)
+{
+    const std::string huge(100000, '7');
+    const CliRun r = texsyn("stucco.png --pyramid:iterations=" + huge + " -o out.exr");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_LT(r.err.size(), 400u) << r.err.substr(0, 400);
+    EXPECT_NE(r.err.find("...(100011 characters)"), std::string::npos) << r.err.substr(0, 400);
+}
