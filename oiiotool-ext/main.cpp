@@ -20,8 +20,10 @@
 #include "commands.h"
 #include "quiet_stderr.h"
 
+#include <texsyn/error_text.h>
 #include <texsyn/io.h>
 #include <texsyn/memory.h>
+#include <texsyn/options.h>
 
 namespace texsyn::cli {
 
@@ -151,7 +153,8 @@ int main(int argc, char* argv[])
         state.outputs.commit();
     } catch (const std::exception& e) {
         state.outputs.discard();
-        std::fprintf(stderr, "texsyn ERROR: %s\n", readable(e.what()).c_str());
+        std::fprintf(
+            stderr, "texsyn ERROR: %s\n", readable(texsyn::printable_text(e.what())).c_str());
         return 1;
     }
     return 0;

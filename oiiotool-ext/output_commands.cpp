@@ -7,6 +7,7 @@
 #include "quiet_stderr.h"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include <OpenImageIO/filesystem.h>
 
@@ -100,9 +101,14 @@ void write_recipe(CliState& state, const std::string& filename)
     Recipe recipe = *item.recipe;
     recipe.tocolorspace = item.output_colorspace;
     const std::string dir = std::filesystem::path(filename).parent_path().string();
+    std::string json;
+    try {
+        json = recipe_to_json(recipe, dir.empty() ? "." : dir);
+    } catch (const std::invalid_argument& e) {
+        throw CliError("--recipe " + filename + " : " + e.what());
+    }
     std::string reason;
-    if (!write_bytes(
-            state.outputs.add(filename), recipe_to_json(recipe, dir.empty() ? "." : dir), reason))
+    if (!write_bytes(state.outputs.add(filename), json, reason))
         throw CliError("--recipe " + filename + " : cannot write (" + reason + ")");
 }
 

@@ -18,6 +18,7 @@ packages=(
   python3-jsonschema                        # tests validate recipes with docs/recipe.schema.json
   libgtest-dev libbenchmark-dev
   clang-format                              # the style check (tests: clang_format)
+  clang libclang-rt-14-dev                  # sanitizer builds and libFuzzer (scripts/sanitize.sh, tests/fuzz/run)
 )
 
 sudo_cmd=()

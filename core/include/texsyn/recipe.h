@@ -84,7 +84,9 @@ bool apply_recipe_arguments(
 bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& error);
 
 /// JSON text of `recipe` with every option of its method written out (but output files);
-/// paths (samples, colorconfig, input files) are made relative to `base_dir`.
+/// paths (samples, colorconfig, input files) are made relative to `base_dir`. Throws
+/// std::invalid_argument if a name is not valid UTF-8 (Linux file names may be bytes;
+/// JSON text cannot hold them).
 std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir);
 
 /// Runs the recipe as the `texsyn` tool runs the same command line: reads the samples

@@ -45,11 +45,26 @@ struct KissApi {
     decltype(&kiss_fft) fft = nullptr;
 };
 
+// Sanitizer runtimes refuse RTLD_DEEPBIND (google/sanitizers#611): sanitizer builds
+// (scripts/sanitize.sh) load KissFFT without it, and so do not guard against the clash.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define TEXSYN_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define TEXSYN_SANITIZED 1
+#endif
+#endif
+#ifdef TEXSYN_SANITIZED
+constexpr int deep_bind = 0;
+#else
+constexpr int deep_bind = RTLD_DEEPBIND;
+#endif
+
 const KissApi& kiss_api()
 {
     static const KissApi api = [] {
         KissApi a;
-        const int flags = RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND;
+        const int flags = RTLD_NOW | RTLD_LOCAL | deep_bind;
         void* lib = dlopen(TEXSYN_KISSFFT_SONAME, flags);
         if (!lib)
             lib = dlopen(TEXSYN_KISSFFT_FILE, flags);

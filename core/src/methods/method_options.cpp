@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <texsyn/methods.h>
 
+#include <texsyn/error_text.h>
+
 namespace texsyn {
 
 MethodOptions::MethodOptions(const MethodOptions& other)
@@ -33,13 +35,17 @@ bool MethodOptions::set(std::string_view name, std::string_view value, std::stri
 
 bool MethodOptions::apply(std::string_view text, std::string& error)
 {
+    bool ok;
     if (!m_holder) {
         std::vector<std::pair<std::string, std::string>> pairs;
-        if (!split_option_string(text, pairs, error))
-            return false;
-        return pairs.empty() || set(pairs[0].first, pairs[0].second, error);
+        ok = split_option_string(text, pairs, error)
+            && (pairs.empty() || set(pairs[0].first, pairs[0].second, error));
+    } else {
+        ok = m_holder->table().apply(m_holder->data(), text, error);
     }
-    return m_holder->table().apply(m_holder->data(), text, error);
+    if (!ok)
+        error = printable_text(error);
+    return ok;
 }
 
 std::string MethodOptions::value(std::string_view name) const
@@ -55,7 +61,10 @@ std::string MethodOptions::format() const
 
 bool MethodOptions::validate(std::string& error) const
 {
-    return !m_holder || m_holder->validate(error);
+    if (!m_holder || m_holder->validate(error))
+        return true;
+    error = printable_text(error);
+    return false;
 }
 
 } // namespace texsyn

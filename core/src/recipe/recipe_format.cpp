@@ -9,10 +9,12 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include <OpenImageIO/strutil.h>
 #include <nlohmann/json.hpp>
 
+#include <texsyn/error_text.h>
 #include <texsyn/io.h>
 #include <texsyn/stats.h>
 
@@ -293,7 +295,7 @@ bool Recipe::validate(std::string& error) const
 {
     const Method* m = row();
     if (!m || !m->makes_recipes()) {
-        error = option_error("method", method, "not one of " + method_names());
+        error = option_error("method", printable_text(method), "not one of " + method_names());
         return false;
     }
     const MethodOptions options = this->options ? this->options : m->defaults();
@@ -312,7 +314,7 @@ bool Recipe::validate(std::string& error) const
     }
     for (int i = 0; i < n; ++i)
         if (is_analysis_filename(samples[size_t(i)]) && !m->accepts_analysis(i)) {
-            error = option_error("sample", samples[size_t(i)],
+            error = option_error("sample", printable_text(samples[size_t(i)]),
                 "an analysis file (.tsa) is for the pyramid methods' samples; method " + method
                     + " needs an image here");
             return false;
@@ -334,7 +336,9 @@ bool Recipe::validate(std::string& error) const
     return true;
 }
 
-bool parse_recipe(
+namespace {
+
+bool parse_recipe_text(
     const std::string& text, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
     nlohmann::json j;
@@ -371,7 +375,7 @@ bool parse_recipe(
     return true;
 }
 
-bool apply_recipe_arguments(
+bool apply_arguments(
     const std::string& arguments, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
     KeyValues pairs;
@@ -421,6 +425,26 @@ bool apply_recipe_arguments(
         return false;
     recipe = std::move(r);
     return true;
+}
+
+} // namespace
+
+bool parse_recipe(
+    const std::string& text, const std::string& base_dir, Recipe& recipe, std::string& error)
+{
+    if (parse_recipe_text(text, base_dir, recipe, error))
+        return true;
+    error = printable_text(error);
+    return false;
+}
+
+bool apply_recipe_arguments(
+    const std::string& arguments, const std::string& base_dir, Recipe& recipe, std::string& error)
+{
+    if (apply_arguments(arguments, base_dir, recipe, error))
+        return true;
+    error = printable_text(error);
+    return false;
 }
 
 bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& error)
@@ -519,7 +543,12 @@ std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir)
         j["colorconfig"] = relative(recipe.colorconfig);
     if (recipe.subbands)
         j["subbands"] = true;
-    return j.dump(2) + "\n";
+    try {
+        return j.dump(2) + "\n";
+    } catch (const nlohmann::json::type_error&) { // JSON text is UTF-8
+        throw std::invalid_argument(
+            "a file or colour-space name is not valid UTF-8, which a JSON recipe cannot hold");
+    }
 }
 
 } // namespace texsyn

@@ -24,7 +24,9 @@
 
 #include <OpenImageIO/strutil.h>
 
+#include <texsyn/error_text.h>
 #include <texsyn/io.h>
+#include <texsyn/options.h>
 
 #include "recipe/json_strict_pvt.h"
 
@@ -281,7 +283,15 @@ bool write_statistics(
     const std::string& filename, const TextureStatistics& stats, std::string& error)
 {
     std::string bytes(magic, magic_size);
-    const std::string header = header_of(stats).dump();
+    std::string header;
+    try {
+        header = header_of(stats).dump();
+    } catch (const nlohmann::json::type_error&) { // JSON text is UTF-8
+        error = filename
+            + ": cannot write the analysis file (the sample's file name or a channel name is "
+              "not valid UTF-8)";
+        return false;
+    }
     append_u64(bytes, header.size());
     bytes += header;
     for (const ComponentStatistics& c : stats.components) {
@@ -309,7 +319,7 @@ bool parse_statistics(
     const std::string& bytes, const std::string& name, TextureStatistics& stats, std::string& error)
 {
     auto fail = [&](const std::string& what) {
-        error = name + ": " + what;
+        error = printable_text(name + ": " + what);
         return false;
     };
     if (bytes.size() < magic_size || bytes.compare(0, magic_size, magic) != 0)
