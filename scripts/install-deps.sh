@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config ccache
+  cmake g++ make ninja-build pkg-config ccache
   libopenimageio-dev openimageio-tools      # tools: the OIIO CMake config imports them
   libopencolorio-dev opencolorio-tools      # ociocheck validates the bundled config
   libopenexr-dev openexr libimath-dev python3-imath

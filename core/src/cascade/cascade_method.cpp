@@ -53,7 +53,7 @@ bool control(const OptionImages& files, const char* name, const std::string& fil
     return false;
 }
 
-bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs,
+bool run_cascade(const MethodOptions& options, const std::vector<MethodInput>& inputs,
     const OptionImages& files, const RunSettings& settings, MethodResult& result,
     std::string& error)
 {
@@ -78,7 +78,7 @@ bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs,
 const Method& cascade_method()
 {
     static const Method m { "cascade", MethodInputs::OptionalImage, MethodOutput::Image,
-        [] { return MethodOptions(CascadeWithFiles()); }, run, "cascade.md",
+        [] { return MethodOptions(CascadeWithFiles()); }, run_cascade, "cascade.md",
         "iterated nonlinear maps and convolution in a multiscale cascade: a generator, or a "
         "texture transfer from an image; seamless",
         "Iterated nonlinear maps and convolution in a multiscale cascade (A <- p(N(A)), "

@@ -16,7 +16,7 @@ struct NoOptions {
     bool validate(std::string&) const { return true; }
 };
 
-bool run(const MethodOptions&, const std::vector<MethodInput>& inputs, const OptionImages&,
+bool run_check(const MethodOptions&, const std::vector<MethodInput>& inputs, const OptionImages&,
     const RunSettings& settings, MethodResult& result, std::string& error)
 {
     PlanarImage planes;
@@ -32,7 +32,7 @@ bool run(const MethodOptions&, const std::vector<MethodInput>& inputs, const Opt
 const Method& check_method()
 {
     static const Method m { "check", MethodInputs::Image, MethodOutput::Report,
-        [] { return MethodOptions(NoOptions()); }, run, "homogeneity.md",
+        [] { return MethodOptions(NoOptions()); }, run_check, "homogeneity.md",
         "how homogeneous a sample is (Heeger & Bergen 1995 section 6): lighting gradient, local "
         "mean and contrast, score and warnings",
         "Print how homogeneous the current image is: lighting gradient, local mean and "

@@ -10,8 +10,8 @@ namespace texsyn::detail {
 
 namespace {
 
-bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, const OptionImages&,
-    const RunSettings& settings, MethodResult& result, std::string& error)
+bool run_mix(const MethodOptions& options, const std::vector<MethodInput>& inputs,
+    const OptionImages&, const RunSettings& settings, MethodResult& result, std::string& error)
 {
     MixOptions opt = options_of<MixOptions>(options);
     apply_run_settings(settings, opt.synthesis);
@@ -29,7 +29,7 @@ bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, c
 const Method& mix_method()
 {
     static const Method m { "mix", MethodInputs::Samples, MethodOutput::Image,
-        [] { return MethodOptions(MixOptions()); }, run, "mixtures.md",
+        [] { return MethodOptions(MixOptions()); }, run_mix, "mixtures.md",
         "Heeger & Bergen 1995 section 5: texture mixtures (palette of one sample and pattern "
         "of another, low and high bands, averaged histograms)",
         "Heeger & Bergen 1995 section 5 texture mixture of the top images or analyses (sample "

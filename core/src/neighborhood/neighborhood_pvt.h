@@ -11,17 +11,9 @@
 #include <texsyn/neighborhood.h>
 
 #include "image/huge_pages_pvt.h"
+#include "image/wrap_pvt.h"
 
 namespace texsyn::detail {
-
-/// i mod n in [0, n) for any i (n >= 1); no division in the common case of i inside.
-inline int wrap(int i, int n)
-{
-    if (i >= 0 && i < n)
-        return i;
-    const int r = i % n;
-    return r < 0 ? r + n : r;
-}
 
 struct Offset {
     int dx = 0;

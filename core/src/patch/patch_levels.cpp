@@ -6,16 +6,6 @@
 
 namespace texsyn::detail {
 
-namespace {
-
-int wrap(int i, int n)
-{
-    i %= n;
-    return i < 0 ? i + n : i;
-}
-
-} // namespace
-
 PixelImage interleave_padded(const std::vector<Plane>& planes, int pad, int nthreads)
 {
     PixelImage out;

@@ -21,11 +21,6 @@ namespace {
 // Rows one task searches: fixed, whatever the thread count.
 constexpr int kRowBlock = 4;
 
-int wrap(int i, int n)
-{
-    return i < 0 ? i + n : i >= n ? i - n : i;
-}
-
 inline float distance_at(const PixelImage& padded, int pad, int x, int y, const PixelImage& sample,
     uint32_t source, int patch, float bound)
 {

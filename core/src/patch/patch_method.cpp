@@ -49,7 +49,7 @@ std::string report_text(const PatchReport& r)
     return text;
 }
 
-bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs,
+bool run_patch(const MethodOptions& options, const std::vector<MethodInput>& inputs,
     const OptionImages& files, const RunSettings& settings, MethodResult& result,
     std::string& error)
 {
@@ -77,7 +77,7 @@ bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs,
 const Method& patch_method()
 {
     static const Method m { "patch", MethodInputs::Image, MethodOutput::Image,
-        [] { return MethodOptions(PatchWithFiles()); }, run, "patch.md",
+        [] { return MethodOptions(PatchWithFiles()); }, run_patch, "patch.md",
         "Kwatra et al. 2005 texture optimization with PatchMatch and Kaspar et al. 2015's "
         "histogram, repetition and guidance terms: structured textures, toroidal, with "
         "source maps",

@@ -11,6 +11,8 @@
 #include <texsyn/image.h>
 #include <texsyn/patch.h>
 
+#include "image/wrap_pvt.h"
+
 namespace texsyn::detail {
 
 /// An image whose channels are interleaved (pixel-major): a patch row is contiguous.

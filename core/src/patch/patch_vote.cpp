@@ -14,11 +14,6 @@ namespace texsyn::detail {
 
 namespace {
 
-int wrap(int i, int n)
-{
-    return i < 0 ? i + n : i >= n ? i - n : i;
-}
-
 // Calls f(sample pixel index, weight index q) for the patch x patch patches over output
 // pixel (x, y): the patch centred at q = (x - dx, y - dy) puts its pixel (dx, dy) there.
 template <class F>

@@ -9,7 +9,7 @@
 namespace texsyn {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
+constexpr double kPi = 3.14159265358979323846;
 } // namespace
 
 Plane periodic_component(const Plane& image, FftBackend fft, int nthreads)
@@ -41,9 +41,9 @@ Plane periodic_component(const Plane& image, FftBackend fft, int nthreads)
     const int wc = M / 2 + 1;
     std::vector<double> cos_x(static_cast<size_t>(wc)), cos_y(static_cast<size_t>(N));
     for (int q = 0; q < wc; ++q)
-        cos_x[size_t(q)] = 2.0 * std::cos(2.0 * pi * q / M);
+        cos_x[size_t(q)] = 2.0 * std::cos(2.0 * kPi * q / M);
     for (int r = 0; r < N; ++r)
-        cos_y[size_t(r)] = 2.0 * std::cos(2.0 * pi * r / N);
+        cos_y[size_t(r)] = 2.0 * std::cos(2.0 * kPi * r / N);
     for (int r = 0; r < N; ++r) {
         for (int q = 0; q < wc; ++q) {
             std::complex<float>& c = spec[size_t(r) * wc + q];

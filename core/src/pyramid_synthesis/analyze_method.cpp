@@ -19,8 +19,8 @@ const OptionTable<PyramidOptions>& analysis_table()
     });
 }
 
-bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, const OptionImages&,
-    const RunSettings& settings, MethodResult& result, std::string& error)
+bool run_analysis(const MethodOptions& options, const std::vector<MethodInput>& inputs,
+    const OptionImages&, const RunSettings& settings, MethodResult& result, std::string& error)
 {
     PyramidOptions opt = options_of<PyramidOptions>(options);
     opt.nthreads = settings.nthreads;
@@ -37,7 +37,8 @@ bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, c
 const Method& analyze_method()
 {
     static const Method m { "analyze", MethodInputs::Image, MethodOutput::Analysis,
-        [] { return MethodOptions(PyramidOptions(), analysis_table()); }, run, "analysis-files.md",
+        [] { return MethodOptions(PyramidOptions(), analysis_table()); }, run_analysis,
+        "analysis-files.md",
         "the pyramid method's analysis of a sample, to write as an analysis file (*.tsa) and "
         "synthesize from without the sample",
         "Replace the current image by its pyramid analysis, to write as *.tsa and synthesize "

@@ -9,8 +9,8 @@ namespace texsyn::detail {
 
 namespace {
 
-bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, const OptionImages&,
-    const RunSettings& settings, MethodResult& result, std::string& error)
+bool run_pyramid(const MethodOptions& options, const std::vector<MethodInput>& inputs,
+    const OptionImages&, const RunSettings& settings, MethodResult& result, std::string& error)
 {
     PyramidOptions opt = options_of<PyramidOptions>(options);
     apply_run_settings(settings, opt);
@@ -33,7 +33,7 @@ bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, c
 const Method& pyramid_method()
 {
     static const Method m { "pyramid", MethodInputs::Sample, MethodOutput::Image,
-        [] { return MethodOptions(PyramidOptions()); }, run, "how-it-works.md",
+        [] { return MethodOptions(PyramidOptions()); }, run_pyramid, "how-it-works.md",
         "Heeger & Bergen 1995: pyramid-based histogram matching (steerable or Laplacian), "
         "seamless",
         "Heeger & Bergen 1995 pyramid synthesis of the current image or analysis (*.tsa): noise "

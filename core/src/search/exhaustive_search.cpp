@@ -15,7 +15,7 @@ namespace {
 
 // Vectors are scanned in fixed chunks, whatever the thread count: each chunk's best is
 // exact (lowest index among equals), and the chunks' bests are reduced in chunk order.
-constexpr size_t kChunk = 2048;
+constexpr size_t kScanChunk = 2048;
 
 struct Best {
     float distance = std::numeric_limits<float>::infinity();
@@ -27,7 +27,7 @@ public:
     ExhaustiveSearch(const VectorSet& vectors, int nthreads)
         : m_vectors(vectors)
         , m_nthreads(nthreads)
-        , m_nchunks((vectors.count + kChunk - 1) / kChunk)
+        , m_nchunks((vectors.count + kScanChunk - 1) / kScanChunk)
     { }
 
     uint32_t nearest(const float* query, const uint32_t*, size_t) const override
@@ -55,8 +55,8 @@ public:
 private:
     Best scan(const float* query, size_t chunk) const
     {
-        const size_t begin = chunk * kChunk;
-        const size_t end = std::min(m_vectors.count, begin + kChunk);
+        const size_t begin = chunk * kScanChunk;
+        const size_t end = std::min(m_vectors.count, begin + kScanChunk);
         const int dim = m_vectors.dim;
         Best best { std::numeric_limits<float>::infinity(), uint32_t(begin) };
         for (size_t i = begin; i < end; ++i) {

@@ -30,7 +30,7 @@ constexpr uint32_t kBucket = 16;
 constexpr int kLloydIterations = 4;
 // Vectors are processed in fixed chunks, whatever the thread count: every sum is formed per
 // chunk and the chunks are combined in order, so the tree is identical for any nthreads.
-constexpr uint32_t kChunk = 256;
+constexpr uint32_t kTsvqChunk = 256;
 // A node is split in parallel (over its chunks) when it holds this many floats.
 constexpr size_t kParallelFloats = size_t(1) << 16;
 
@@ -151,7 +151,7 @@ private:
 
     static uint32_t chunks(uint32_t begin, uint32_t end)
     {
-        return (end - begin + kChunk - 1) / kChunk;
+        return (end - begin + kTsvqChunk - 1) / kTsvqChunk;
     }
 
     const float* vec(uint32_t pos) const { return m_vectors.row(m_tree->order[pos]); }
@@ -162,8 +162,8 @@ private:
     {
         const uint32_t n = chunks(begin, end);
         auto run = [&](int64_t c) {
-            const uint32_t b = begin + uint32_t(c) * kChunk;
-            f(uint32_t(c), b, std::min(end, b + kChunk));
+            const uint32_t b = begin + uint32_t(c) * kTsvqChunk;
+            f(uint32_t(c), b, std::min(end, b + kTsvqChunk));
         };
         if (n > 1 && size_t(end - begin) * m_dim >= kParallelFloats)
             OIIO::parallel_for(int64_t(0), int64_t(n), run, OIIO::paropt(m_nthreads).minitems(1));

@@ -9,8 +9,8 @@ namespace texsyn::detail {
 
 namespace {
 
-bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, const OptionImages&,
-    const RunSettings& settings, MethodResult& result, std::string& error)
+bool run_solid(const MethodOptions& options, const std::vector<MethodInput>& inputs,
+    const OptionImages&, const RunSettings& settings, MethodResult& result, std::string& error)
 {
     SolidOptions opt = options_of<SolidOptions>(options);
     apply_run_settings(settings, opt);
@@ -25,7 +25,7 @@ bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, c
 const Method& solid_method()
 {
     static const Method m { "solid", MethodInputs::Image, MethodOutput::Volume,
-        [] { return MethodOptions(SolidOptions()); }, run, "solid.md",
+        [] { return MethodOptions(SolidOptions()); }, run_solid, "solid.md",
         "Heeger & Bergen 1995 section 4: solid textures (3-D blocks) from a 2-D sample, "
         "seamless",
         "Heeger & Bergen 1995 section 4 solid texture of the current image: a 3-D block whose "

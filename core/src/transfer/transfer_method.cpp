@@ -21,8 +21,8 @@ const OptionTable<PyramidOptions>& transfer_table()
     });
 }
 
-bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, const OptionImages&,
-    const RunSettings& settings, MethodResult& result, std::string& error)
+bool run_transfer(const MethodOptions& options, const std::vector<MethodInput>& inputs,
+    const OptionImages&, const RunSettings& settings, MethodResult& result, std::string& error)
 {
     PyramidOptions opt = options_of<PyramidOptions>(options);
     apply_run_settings(settings, opt);
@@ -45,7 +45,8 @@ bool run(const MethodOptions& options, const std::vector<MethodInput>& inputs, c
 const Method& transfer_method()
 {
     static const Method m { "transfer", MethodInputs::ImageAndSample, MethodOutput::Image,
-        [] { return MethodOptions(PyramidOptions(), transfer_table()); }, run, "mixtures.md",
+        [] { return MethodOptions(PyramidOptions(), transfer_table()); }, run_transfer,
+        "mixtures.md",
         "Heeger & Bergen 1995 section 5: match-texture applied to an image instead of noise "
         "(its layout, the sample's statistics)",
         "Texture transfer: pops a sample or analysis (top) and an image (below it) and gives "
