@@ -7,16 +7,21 @@
 #                                               (tests/fuzz/run); runs the tests matching
 #                                               CTEST_REGEX (default: every test but the
 #                                               docs, style and packaging checks)
+#   scripts/sanitize.sh address-ci              the same build, limited to the programs of
+#                                               the subset CI runs (README: "Tests"), and
+#                                               that subset
 #   scripts/sanitize.sh thread  [CTEST_REGEX]   ThreadSanitizer in ./build-tsan; default: the
 #                                               determinism tests and the 16-thread
 #                                               ImageCache test
 #
 # Any sanitizer report fails the test that triggered it (halt_on_error), so the script
-# exits non-zero. SANITIZE_BUILD_ONLY=1 builds without running the tests. Stock OIIO tools that load the plugin get the sanitizer runtime
-# preloaded.
+# exits non-zero. SANITIZE_BUILD_ONLY=1 builds without running the tests;
+# SANITIZE_TARGETS="a b" builds only those targets. Stock OIIO tools that load the plugin
+# get the sanitizer runtime preloaded.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 kind="${1:-address}"
+targets="${SANITIZE_TARGETS:-}"
 case "$kind" in
   address)
     dir=build-asan
@@ -24,13 +29,29 @@ case "$kind" in
     regex="${2:-.}"
     fuzz=ON
     ;;
+  address-ci)
+    # The CI subset: every parser of untrusted input (options, recipes, analysis files,
+    # images), the write path and its fault cases, the plugin through stock oiiotool,
+    # iinfo, maketx and Python, the pyramid method end to end, and the fuzz corpora.
+    kind=address
+    dir=build-asan
+    sanitize=address,undefined
+    fuzz=ON
+    tests="image io_safety options methods recipe stats pyramid histogram"
+    tests="$tests robustness_cli plugin cli"
+    targets="texsyn_cli texsyn_imageio fuzz_option_strings fuzz_recipe fuzz_analysis_file"
+    targets="$targets fuzz_image_analysis $(printf '%s_test ' $tests)"
+    regex="^(Image|IoSafety|MemoryLimit|Options|Methods|Recipe|AnalysisFile[A-Za-z]*"
+    regex="$regex|Laplacian|Steerable|Pyramid|PeriodicComponent|Histogram|Barycenter"
+    regex="$regex|Robustness|Plugin|Cli)\\.|^fuzz_"
+    ;;
   thread)
     dir=build-tsan
     sanitize=thread
     regex="${2:-Thread|Determin|BitIdentical|SameSeed|SixteenThreads}"
     fuzz=OFF
     ;;
-  *) echo "usage: scripts/sanitize.sh address|thread [CTEST_REGEX]" >&2; exit 2 ;;
+  *) echo "usage: scripts/sanitize.sh address|address-ci|thread [CTEST_REGEX]" >&2; exit 2 ;;
 esac
 bash scripts/install-deps.sh
 
@@ -40,12 +61,18 @@ runtime="$(clang++ -print-file-name=libclang_rt.asan-x86_64.so)"
 link_flags=""
 [ "$kind" = address ] && link_flags="-shared-libasan -Wl,-rpath,$(dirname "$runtime")"
 
-cmake -S . -B "$dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DTEXSYN_SANITIZE="$sanitize" -DTEXSYN_FUZZ="$fuzz" \
+generator=()
+[ -f "$dir/CMakeCache.txt" ] || generator=(-G Ninja)
+cmake -S . -B "$dir" "${generator[@]}" -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+  -DTEXSYN_SANITIZE="$sanitize" -DTEXSYN_FUZZ="$fuzz" \
   -DCMAKE_EXE_LINKER_FLAGS="$link_flags" -DCMAKE_SHARED_LINKER_FLAGS="$link_flags" \
   -DCMAKE_MODULE_LINKER_FLAGS="$link_flags" -DTEXSYN_BUILD_BENCH=OFF > "$dir.log" 2>&1 \
   || { cat "$dir.log"; exit 1; }
-cmake --build "$dir" -j"$(nproc)" >> "$dir.log" 2>&1 || { tail -50 "$dir.log"; exit 1; }
+build_targets=()
+[ -n "$targets" ] && build_targets=(--target $targets)
+cmake --build "$dir" -j"$(nproc)" "${build_targets[@]}" >> "$dir.log" 2>&1 \
+  || { tail -50 "$dir.log"; exit 1; }
 [ "${SANITIZE_BUILD_ONLY:-0}" = 1 ] && exit 0
 
 # Leaks are not checked: OIIO, OCIO and Python keep process-lifetime caches.
