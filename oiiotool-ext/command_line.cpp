@@ -312,17 +312,22 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
         if (!OIIO::Strutil::iends_with(recipe, ".texsyn"))
             throw CliError("--recipe " + recipe + " : name the recipe *.texsyn");
     }
-    for (size_t i = 0; i < side_outputs.size(); ++i) {
-        const auto& [option, out] = side_outputs[i];
+    for (const auto& [option, out] : side_outputs)
         check_output_path(option + "=", out, inputs);
-        for (const std::string& other : outputs)
-            if (same_path(other, out))
-                throw CliError(option + "=" + out + " : is also written by -o");
+    // No two outputs may name one file, however spelled (./a.png, a symlink to it): the
+    // last would silently replace the others.
+    std::vector<std::string> written;
+    for (const std::string& out : outputs)
+        written.push_back("-o " + out);
+    for (const std::string& recipe : recipes)
+        written.push_back("--recipe " + recipe);
+    for (const auto& [option, out] : side_outputs)
+        written.push_back(option + "=" + out);
+    auto path_of = [](const std::string& w) { return w.substr(w.find_first_of(" =") + 1); };
+    for (size_t i = 0; i < written.size(); ++i)
         for (size_t j = 0; j < i; ++j)
-            if (same_path(side_outputs[j].second, out))
-                throw CliError(option + "=" + out + " : is also written by " + side_outputs[j].first
-                    + "=" + side_outputs[j].second);
-    }
+            if (same_path(path_of(written[i]), path_of(written[j])))
+                throw CliError(written[i] + " : is also written by " + written[j]);
     for (const std::string& out : outputs) {
         check_output_path("-o", out, inputs);
         if (is_analysis_filename(out)) {

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <new>
 #include <string>
 
 #include <unistd.h>
@@ -29,38 +30,54 @@ namespace texsyn::cli {
 
 namespace {
 
-// The second pass: does what check_command_line has checked, left to right.
+// Does args[i] (and the arguments it takes), as check_command_line has checked it; returns
+// the index of its last argument.
+size_t run_argument(CliState& state, const std::vector<std::string>& args, size_t i)
+{
+    const std::string& a = args[i];
+    if (takes_argument(a)) {
+        const std::string& v = args[++i];
+        if (a == "-o")
+            write_output(state, v);
+        else if (a == "--recipe")
+            write_recipe(state, v);
+        else if (a == "--iscolorspace") {
+            if (state.stack.empty())
+                state.pending_iscolorspace = v;
+            else
+                reinterpret_input(state, v);
+        } else if (a == "--tocolorspace") {
+            if (state.stack.empty())
+                state.pending_tocolorspace = v;
+            else
+                state.stack.top(a).output_colorspace = v;
+        }
+    } else if (a == "--apply-map") {
+        run_apply_map(state, args[i + 1], args[i + 2]);
+        i += 2;
+    } else if (is_flag(a)) {
+        return i;
+    } else if (!a.empty() && a[0] == '-') {
+        run_method_command(
+            state, *find_method(split_command(a).first.substr(2)), state.options.at(i));
+    } else {
+        push_input(state, a);
+    }
+    return i;
+}
+
+// The second pass: does what check_command_line has checked, left to right. Memory that
+// runs out despite the estimates (an address-space limit, other processes) is reported
+// against the argument that needed it.
 void run(CliState& state, const std::vector<std::string>& args)
 {
     for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (takes_argument(a)) {
-            const std::string& v = args[++i];
-            if (a == "-o")
-                write_output(state, v);
-            else if (a == "--recipe")
-                write_recipe(state, v);
-            else if (a == "--iscolorspace") {
-                if (state.stack.empty())
-                    state.pending_iscolorspace = v;
-                else
-                    reinterpret_input(state, v);
-            } else if (a == "--tocolorspace") {
-                if (state.stack.empty())
-                    state.pending_tocolorspace = v;
-                else
-                    state.stack.top(a).output_colorspace = v;
-            }
-        } else if (a == "--apply-map") {
-            run_apply_map(state, args[i + 1], args[i + 2]);
-            i += 2;
-        } else if (is_flag(a)) {
-            continue;
-        } else if (!a.empty() && a[0] == '-') {
-            run_method_command(
-                state, *find_method(split_command(a).first.substr(2)), state.options.at(i));
-        } else {
-            push_input(state, a);
+        try {
+            i = run_argument(state, args, i);
+        } catch (const std::bad_alloc&) {
+            throw CliError(args[i]
+                + " : not enough memory (a memory or address-space limit "
+                  "was reached: try a smaller size or raise the limit)");
         }
     }
 }
@@ -73,26 +90,6 @@ void check_stdout()
     if (std::fflush(stdout) != 0 || std::ferror(stdout))
         throw CliError(std::string("standard output: write error")
             + (errno ? " (" + std::string(std::strerror(errno)) + ")" : ""));
-}
-
-// `message` with every word longer than 120 characters cut to its first 60 ("...(N
-// characters)"): errors echo arguments, and a 100 kB option value must not make a 100 kB
-// line.
-std::string readable(const std::string& message)
-{
-    std::string out;
-    size_t i = 0;
-    while (i < message.size()) {
-        const size_t end = std::min(message.find(' ', i), message.size());
-        if (end - i > 120)
-            out += message.substr(i, 60) + "...(" + std::to_string(end - i) + " characters)";
-        else
-            out += message.substr(i, end - i);
-        if (end < message.size())
-            out += ' ';
-        i = end + 1;
-    }
-    return out;
 }
 
 // SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE: remove every temporary output file and end
@@ -116,8 +113,14 @@ void install_handlers()
     struct sigaction sa { };
     sa.sa_handler = end_on_signal;
     sigemptyset(&sa.sa_mask);
-    for (int sig : { SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE })
+    // A signal ignored by whoever started texsyn (SIGINT and SIGQUIT for a background job
+    // of a non-interactive shell, SIGHUP under nohup) stays ignored, as the shell meant.
+    for (int sig : { SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE }) {
+        struct sigaction inherited { };
+        if (::sigaction(sig, nullptr, &inherited) == 0 && inherited.sa_handler == SIG_IGN)
+            continue;
         ::sigaction(sig, &sa, nullptr);
+    }
     // Past a file-size limit (ulimit -f) a write fails with EFBIG, reported like a full
     // disk, instead of killing the process with its files half-written.
     std::signal(SIGXFSZ, SIG_IGN);
@@ -153,8 +156,7 @@ int main(int argc, char* argv[])
         state.outputs.commit();
     } catch (const std::exception& e) {
         state.outputs.discard();
-        std::fprintf(
-            stderr, "texsyn ERROR: %s\n", readable(texsyn::printable_text(e.what())).c_str());
+        std::fprintf(stderr, "texsyn ERROR: %s\n", texsyn::readable_message(e.what()).c_str());
         return 1;
     }
     return 0;

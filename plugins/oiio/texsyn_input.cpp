@@ -17,6 +17,7 @@
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
 
+#include <texsyn/error_text.h>
 #include <texsyn/recipe.h>
 #include <texsyn/version.h>
 #include <texsyn/volume.h>
@@ -61,12 +62,12 @@ public:
         texsyn::Recipe recipe;
         std::string error;
         if (!texsyn::recipe_from_filename(name, recipe, error)) {
-            errorfmt("{}", error);
+            errorfmt("{}", texsyn::readable_message(error));
             return false;
         }
         m_images = cached_synthesis(name, recipe, error);
         if (!m_images) {
-            errorfmt("{}", error);
+            errorfmt("{}", texsyn::readable_message(error));
             return false;
         }
         m_subimage = 0;

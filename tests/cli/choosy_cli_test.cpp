@@ -123,7 +123,7 @@ TEST_F(Cli, BadChoosyRequestsAreRefused)
     expect_failure("stucco.png --choosy:map=coords.png -o out.exr",
         "texsyn ERROR: --choosy : map=coords.png : name it *.exr");
     expect_failure("stucco.png --choosy:map=out.exr -o out.exr",
-        "texsyn ERROR: map=out.exr : is also written by -o");
+        "texsyn ERROR: map=out.exr : is also written by -o out.exr");
     expect_failure("stucco.png --analyze --choosy -o out.exr",
         "texsyn ERROR: --choosy : needs an image, not an analysis (the analysis of stucco.png; "
         "only --pyramid, --mix and --transfer take analyses)");

@@ -46,6 +46,11 @@ std::string slurp(const fs::path& p)
     return ss.str();
 }
 
+[[maybe_unused]] void spit(const fs::path& p, const std::string& bytes)
+{
+    std::ofstream(p, std::ios::binary) << bytes;
+}
+
 class Cli : public ::testing::Test {
 protected:
     void SetUp() override

@@ -97,7 +97,7 @@ TEST_F(Cli, BadNeighborhoodRequestsAreRefused)
     expect_failure("stucco.png --neighborhood:map=a.exr:map=b.exr -o out.exr",
         "texsyn ERROR: --neighborhood : map=b.exr : given twice");
     expect_failure("stucco.png --neighborhood:map=out.exr -o out.exr",
-        "texsyn ERROR: map=out.exr : is also written by -o");
+        "texsyn ERROR: map=out.exr : is also written by -o out.exr");
     expect_failure_starting("stucco.png --neighborhood:size=60000x60000 -o out.exr",
         "texsyn ERROR: --neighborhood : size=60000x60000 would need about ");
     write_sample("tiny.png", 3, OIIO::TypeUInt8);

@@ -108,7 +108,7 @@ TEST_F(Cli, BadPatchRequestsAreRefused)
         "texsyn ERROR: --patch : map=coords.png : name it *.exr");
     // Two writers of one file, however it is spelled, are refused before anything runs.
     expect_failure("stucco.png --patch:map=m.exr -o ./m.exr",
-        "texsyn ERROR: map=m.exr : is also written by -o");
+        "texsyn ERROR: map=m.exr : is also written by -o ./m.exr");
     expect_failure("stucco.png --patch:size=32x32:map=m.exr --patch:map=./m.exr -o out.exr",
         "texsyn ERROR: map=./m.exr : is also written by map=m.exr");
     expect_failure("stucco.png --patch:guide=missing.exr -o out.exr",

@@ -11,7 +11,10 @@
 #include <thread>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <OpenImageIO/imagebufalgo.h>
 
 namespace {
 
@@ -31,11 +34,15 @@ protected:
         EXPECT_TRUE(left.empty()) << context << ": left " << left.front();
     }
 
-    // Starts the tool on `args` (stderr to err.txt) and returns its pid.
-    pid_t spawn(const std::vector<std::string>& args)
+    // Starts the tool on `args` (stderr to err.txt) and returns its pid. The signals it
+    // handles start with their default action (this test may run in a background job,
+    // which ignores SIGINT), or ignored if `ignored` says so.
+    pid_t spawn(const std::vector<std::string>& args, int ignored = 0)
     {
         const pid_t pid = ::fork();
         if (pid == 0) {
+            for (int sig : { SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE })
+                std::signal(sig, sig == ignored ? SIG_IGN : SIG_DFL);
             if (::chdir(dir.c_str()) != 0)
                 ::_exit(127);
             const int err = ::open("err.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -153,6 +160,25 @@ TEST_F(Robustness, SignalsStopTheRunAndRemoveTemporaries)
     }
 }
 
+// A signal its parent ignores (SIGINT in a shell's background job, SIGHUP under nohup)
+// stays ignored; the others still stop the run cleanly.
+TEST_F(Robustness, InheritedIgnoredSignalsStayIgnored)
+{
+    const pid_t pid = spawn(slow_run(), SIGINT);
+    ASSERT_GT(pid, 0);
+    ASSERT_FALSE(wait_for_temporary().empty());
+    ::kill(pid, SIGINT);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    int status = 0;
+    EXPECT_EQ(::waitpid(pid, &status, WNOHANG), 0) << "SIGINT ended the run";
+    ::kill(pid, SIGTERM);
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
+    fs::remove(dir / "err.txt");
+    expect_only({ "stucco.png" }, "SIGTERM after an ignored SIGINT");
+}
+
 // SIGKILL cannot be handled: its temporary stays, recognisable by name, host and pid, and
 // the next run into the folder removes it. A live process's temporary is left alone.
 TEST_F(Robustness, TheNextRunRemovesTheTemporariesOfKilledProcesses)
@@ -194,11 +220,11 @@ TEST_F(Robustness, ImageHeadersBeyondTheMemoryLimitAreRefused)
     const auto inputs
         = { std::string("stucco.png"), std::string("bomb.png"), std::string("bomb20k.png") };
     expect_failure_starting("bomb.png --pyramid -o out.exr",
-        "texsyn ERROR: bomb.png: its 100000x100000 pixels would need about 111.8 GB of memory",
+        "texsyn ERROR: bomb.png: its 100000x100000 pixels would need about 447.0 GB of memory",
         inputs);
     const auto start = std::chrono::steady_clock::now();
     expect_failure_starting("--max-memory 1G bomb20k.png --pyramid -o out.exr",
-        "texsyn ERROR: bomb20k.png: its 20000x20000 pixels would need about 4.5 GB of memory "
+        "texsyn ERROR: bomb20k.png: its 20000x20000 pixels would need about 17.9 GB of memory "
         "(only ",
         inputs);
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
@@ -240,7 +266,7 @@ TEST_F(Robustness, AnAddressSpaceLimitIsRespectedWhenReading)
     EXPECT_EQ(r.status, 1) << r.err;
     EXPECT_EQ(
         r.first_err_line().rfind(
-            "texsyn ERROR: big.png: its 8192x8192 pixels would need about 768.0 MB of memory", 0),
+            "texsyn ERROR: big.png: its 8192x8192 pixels would need about 3.0 GB of memory", 0),
         0u)
         << r.err;
     expect_only({ "stucco.png", "big.png" }, "ulimit -v");
@@ -274,4 +300,128 @@ TEST_F(Robustness, NamesThatAreNotUtf8AreRefusedByTheJsonWriters)
         "texsyn ERROR: -o a.tsa : cannot write the analysis file (the sample's file name or a "
         "channel name is not valid UTF-8)");
     expect_only({ "stucco.png", name }, "names that are not UTF-8");
+}
+
+namespace {
+
+// A little-endian baseline TIFF: uncompressed 8-bit RGB, one strip of `strip_bytes` at
+// offset 8 + IFD, followed by `data` (found by an adversarial campaign: headers and strips
+// that do not hold the pixels they claim).
+std::string rgb_tiff(uint32_t width, uint32_t height, uint32_t strip_bytes, const std::string& data)
+{
+    const uint16_t entries = 9;
+    const uint32_t data_offset = 8 + 2 + 12 * entries + 4;
+    const uint32_t tags[entries][4] = { { 256, 4, 1, width }, { 257, 4, 1, height },
+        { 258, 3, 1, 8 }, { 259, 3, 1, 1 }, { 262, 3, 1, 2 }, { 273, 4, 1, data_offset },
+        { 277, 3, 1, 3 }, { 278, 4, 1, height }, { 279, 4, 1, strip_bytes } };
+    std::string out = std::string("II*\0", 4);
+    auto put = [&](uint32_t v, int bytes) {
+        for (int i = 0; i < bytes; ++i)
+            out += char((v >> (8 * i)) & 0xff);
+    };
+    put(8, 4);
+    put(entries, 2);
+    for (const auto& t : tags) {
+        put(t[0], 2);
+        put(t[1], 2);
+        put(t[2], 4);
+        put(t[3], t[1] == 3 ? 2 : 4);
+        if (t[1] == 3)
+            put(0, 2);
+    }
+    put(0, 4);
+    return out + data;
+}
+
+} // namespace
+
+// Truncated and lying files are refused, not read as black or grey pixels: a JPEG cut in
+// half (libjpeg reports success and only records "Premature end of JPEG file"), a TIFF
+// whose strip is cut off, and a 138-byte TIFF claiming two million rows (OIIO added an
+// error per missing row until its 16 MB limit on errors aborted the process).
+TEST_F(Robustness, TruncatedAndLyingFilesAreRefused)
+{
+    ASSERT_EQ(texsyn("stucco.png -o whole.jpg").status, 0);
+    const std::string jpeg = slurp(dir / "whole.jpg");
+    spit(dir / "half.jpg", jpeg.substr(0, jpeg.size() / 2));
+    spit(dir / "cut.tif", rgb_tiff(64, 64, 64 * 64 * 3, std::string(1000, '\x80')));
+    spit(dir / "tall.tif", rgb_tiff(1, 2000000, 16, std::string(16, '\x80')));
+    for (const std::string name : { "half.jpg", "cut.tif", "tall.tif" }) {
+        const auto start = std::chrono::steady_clock::now();
+        const CliRun r = texsyn(name + " --check");
+        EXPECT_EQ(r.status, 1) << name;
+        EXPECT_EQ(r.first_err_line().find("texsyn ERROR: " + name + ": cannot read image ("), 0u)
+            << r.err;
+        EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20)) << name;
+    }
+    EXPECT_NE(texsyn("half.jpg --check").err.find("Premature end of JPEG file"), std::string::npos);
+}
+
+// No two outputs may name one file, however spelled: the last used to replace the others
+// silently.
+TEST_F(Robustness, TwoOutputsNamingOneFileAreRefused)
+{
+    const std::string run = "stucco.png --pyramid:size=32x32:iterations=1 ";
+    expect_failure(
+        run + "-o a.png -o ./a.png", "texsyn ERROR: -o ./a.png : is also written by -o a.png");
+    expect_failure(
+        run + "-o a.png -o a.png", "texsyn ERROR: -o a.png : is also written by -o a.png");
+    expect_failure(run + "-o a.exr -o " + (dir / "a.exr").string(),
+        "texsyn ERROR: -o " + (dir / "a.exr").string() + " : is also written by -o a.exr");
+    expect_failure(run + "-o z.png --recipe r.texsyn --recipe ./r.texsyn",
+        "texsyn ERROR: --recipe ./r.texsyn : is also written by --recipe r.texsyn");
+    expect_failure("stucco.png --analyze -o a.tsa -o ./a.tsa",
+        "texsyn ERROR: -o ./a.tsa : is also written by -o a.tsa");
+    ASSERT_EQ(texsyn(run + "-o a.png").status, 0);
+    fs::create_symlink("a.png", dir / "l.png");
+    expect_failure(run + "-o a.png -o l.png",
+        "texsyn ERROR: -o l.png : is also written by -o a.png", { "stucco.png", "a.png", "l.png" });
+}
+
+// A colour config whose FileTransform names a FIFO or a device is refused when it is
+// loaded: OCIO would block for ever reading it, in texsyn and in every host of the plugin.
+TEST_F(Robustness, LutFilesThatAreNotRegularFilesAreRefused)
+{
+    ASSERT_EQ(::mkfifo((dir / "lut.spi1d").c_str(), 0644), 0);
+    std::string config = slurp(TEXSYN_BUNDLED_OCIO_CONFIG);
+    const size_t search = config.find("search_path:");
+    ASSERT_NE(search, std::string::npos);
+    config.replace(search, config.find('\n', search) - search, "search_path: \".\"");
+    spit(dir / "fifo.ocio",
+        config
+            + "\n  - !<ColorSpace>\n    name: evil\n    isdata: false\n"
+              "    to_scene_reference: !<FileTransform> {src: lut.spi1d, interpolation: linear}\n");
+    spit(dir / "zero.ocio",
+        config
+            + "\n  - !<ColorSpace>\n    name: evil\n    isdata: false\n"
+              "    to_scene_reference: !<FileTransform> {src: /dev/zero, interpolation: linear}\n");
+    expect_failure("--colorconfig fifo.ocio --iscolorspace evil stucco.png --pyramid -o o.png",
+        "texsyn ERROR: colour config 'fifo.ocio': its FileTransform 'lut.spi1d': "
+            + (dir / "lut.spi1d").string()
+            + ": is not a regular file (a FIFO, device or socket), not a LUT file",
+        { "stucco.png", "fifo.ocio", "zero.ocio", "lut.spi1d" });
+    expect_failure_starting("--colorconfig zero.ocio stucco.png --pyramid -o o.png",
+        "texsyn ERROR: colour config 'zero.ocio': its FileTransform '/dev/zero': /dev/zero: is not "
+        "a regular file",
+        { "stucco.png", "fifo.ocio", "zero.ocio", "lut.spi1d" });
+}
+
+// The memory estimate covers what reading a sample and analysing it hold, not only the
+// output: a large sample under a small limit is refused before the memory is used (an 8K
+// sample used to reach 14 GB under --max-memory 1G).
+TEST_F(Robustness, TheSampleAndItsAnalysisAreEstimated)
+{
+    const OIIO::ImageBuf big
+        = OIIO::ImageBufAlgo::resize(OIIO::ImageBuf((dir / "stucco.png").string()), "", 0,
+            OIIO::ROI(0, 1024, 0, 1024, 0, 1, 0, 3));
+    ASSERT_TRUE(big.write((dir / "big.png").string())) << big.geterror();
+    expect_failure_starting("--max-memory 140M big.png --pyramid:size=64x64 -o o.png",
+        "texsyn ERROR: big.png: its 1024x1024 pixels would need about 48.0 MB of memory (only ",
+        { "stucco.png", "big.png" });
+    expect_failure_starting("--max-memory 250M big.png --pyramid:size=64x64 -o o.png",
+        "texsyn ERROR: --pyramid : the analysis of the 1024x1024 sample would need about ",
+        { "stucco.png", "big.png" });
+    const CliRun r = texsyn("--max-memory 250M big.png --pyramid:size=64x64 -o o.png");
+    EXPECT_NE(r.err.find(", of which the process holds "), std::string::npos) << r.err;
 }

@@ -5,9 +5,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <thread>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <OpenImageIO/imagebuf.h>
@@ -251,6 +253,40 @@ TEST_F(Plugin, BadRecipesFailCleanly)
         }
         EXPECT_FALSE(fs::exists(dir / "x.exr"));
     }
+}
+
+// What the host tools print stays readable and cannot end them: a recipe naming a 10 MB
+// sample used to reach OIIO's 16 MB limit on error text and abort maketx and Python; a
+// colour config whose LUT is a FIFO used to hang every host.
+TEST_F(Plugin, HostsGetShortErrorsAndNeverBlock)
+{
+    write("huge.texsyn",
+        "{\"texsyn_recipe\":1,\"sample\":\"" + std::string(10000000, 'a')
+            + "\",\"size\":\"32x32\"}");
+    ToolRun r = sh("timeout 120 maketx huge.texsyn -o x.tx");
+    EXPECT_EQ(r.status, 1) << r.out.substr(0, 300);
+    EXPECT_LT(r.out.size(), 1000u) << r.out.substr(0, 300);
+    EXPECT_NE(r.out.find("...(10000000 characters): no such file"), std::string::npos)
+        << r.out.substr(0, 300);
+    r = sh(
+        "timeout 120 /usr/bin/python3 -c \"import OpenImageIO as o; b = o.ImageBuf('huge.texsyn'); "
+        "print(b.read(), len(b.geterror()))\"");
+    EXPECT_EQ(r.status, 0) << r.out.substr(0, 300);
+    EXPECT_EQ(r.out.rfind("False ", 0), 0u) << r.out.substr(0, 300);
+
+    ASSERT_EQ(::mkfifo((dir / "lut.spi1d").c_str(), 0644), 0);
+    std::ifstream bundled(TEXSYN_BUNDLED_OCIO_CONFIG);
+    std::stringstream config;
+    config << bundled.rdbuf();
+    write("fifo.ocio",
+        std::regex_replace(config.str(), std::regex("search_path:[^\n]*"), "search_path: \".\"")
+            + "\n  - !<ColorSpace>\n    name: evil\n    isdata: false\n"
+              "    to_scene_reference: !<FileTransform> {src: lut.spi1d, interpolation: linear}\n");
+    r = sh("timeout 60 iinfo 's.png.texsyn?size=16x16&colorconfig=fifo.ocio&iscolorspace=evil'");
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_NE(
+        r.out.find("colour config 'fifo.ocio': its FileTransform 'lut.spi1d': "), std::string::npos)
+        << r.out;
 }
 
 // A recipe's sample that is a decompression bomb, or a recipe beyond the memory limit

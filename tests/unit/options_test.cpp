@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
+#include <texsyn/error_text.h>
 #include <texsyn/options.h>
 #include <texsyn/pyramid_synthesis.h>
 
@@ -160,4 +161,18 @@ TEST(Options, IncludedOptionalAndEmptyListFieldsRoundTrip)
     ASSERT_TRUE(t.set(o, "list", "none", error));
     EXPECT_FALSE(o.index.has_value());
     EXPECT_TRUE(o.list.empty());
+}
+
+// Error messages echo what the user gave: control characters and bytes that are not UTF-8
+// are written as \xHH (valid UTF-8 stays), and words longer than 120 characters are cut
+// with their length (a colon ending the word is kept and not counted).
+TEST(Options, EchoedTextIsPrintableAndCut)
+{
+    EXPECT_EQ(printable_text("a\nb\tc"), "a\\x0ab\\x09c");
+    EXPECT_EQ(printable_text("caf\xc3\xa9 \xff\xfe \xe2\x82"), "caf\xc3\xa9 \\xff\\xfe \\xe2\\x82");
+    EXPECT_EQ(printable_text("\xed\xa0\x80"), "\\xed\\xa0\\x80"); // a UTF-16 surrogate
+    const std::string name(5004, 'a');
+    EXPECT_EQ(readable_message(name + ": no such file"),
+        std::string(60, 'a') + "...(5004 characters): no such file");
+    EXPECT_EQ(readable_message("short words stay"), "short words stay");
 }

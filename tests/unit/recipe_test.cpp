@@ -113,6 +113,16 @@ TEST(Recipe, DuplicateKeysAreRefused)
     EXPECT_EQ(error, "malformed JSON (duplicate key \"iterations\")");
 }
 
+// A NUL byte ended the parse and what followed was ignored ("{...}\0junk" was read, while
+// "{...} {}" was refused).
+TEST(Recipe, NulBytesAreRefused)
+{
+    Recipe r;
+    std::string error;
+    EXPECT_FALSE(parse_recipe(std::string("{ \"sample\": \"a.png\" }\0junk", 26), "", r, error));
+    EXPECT_EQ(error, "malformed JSON (a NUL byte at offset 21)");
+}
+
 // Deeply nested JSON is refused before the parser recurses into it (it would overflow the
 // stack of the process reading the recipe: stock oiiotool, through the plugin).
 TEST(Recipe, DeepNestingIsRefusedBeforeParsing)

@@ -272,7 +272,11 @@ TEST_F(AnalysisFile, CountsMustBeNonNegativeIntegersAndKeysUnique)
     expect_rejected(with_header(*bytes, replace_once(h, "\"pixels\":2304", "\"pixels\":-1")),
         "invalid header: pixels is not a count (-1)");
     expect_rejected(with_header(*bytes, replace_once(h, "\"width\":48", "\"width\":48.0")),
-        "invalid header: width is not an integer (48.0)");
+        "invalid header: width is not an integer from -2147483648 to 2147483647 (48.0)");
+    expect_rejected(
+        with_header(*bytes, replace_once(h, "\"width\":48", "\"width\":1000000000000000000")),
+        "invalid header: width is not an integer from -2147483648 to 2147483647 "
+        "(1000000000000000000)");
     expect_rejected(
         with_header(*bytes, replace_once(h, "\"version\":2", "\"version\":2,\"version\":2")),
         "malformed header: duplicate key \"version\"");

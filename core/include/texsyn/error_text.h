@@ -7,8 +7,15 @@
 
 namespace texsyn {
 
-/// `text` with control characters (line breaks, tabs, NUL, DEL) written as "\xHH": errors
-/// echo what the user gave, and an echoed line break would split the one-line message.
+/// `text` with control characters (line breaks, tabs, NUL, DEL) and bytes that are not
+/// valid UTF-8 written as "\xHH": errors echo what the user gave, and an echoed line break
+/// would split the one-line message (and raw bytes garble a terminal or a JSON log).
 std::string printable_text(std::string_view text);
+
+/// An error message ready to print: printable_text(), with every word longer than 120
+/// characters cut to its first 60 and its length ("aaaa...(100000 characters)"; a colon
+/// ending the word is kept after the cut), so that echoing a 100 kB argument or name does
+/// not make a 100 kB line.
+std::string readable_message(std::string_view message);
 
 } // namespace texsyn

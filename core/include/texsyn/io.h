@@ -16,10 +16,11 @@ namespace texsyn {
 /// OIIO's shared ImageCache, so it is safe inside an OIIO format plugin. If `native` is not
 /// null it receives the file's own spec (pixel type included). Fails (false, "FILE:
 /// reason") if the file is missing, not a regular file, unreadable, truncated or not an
-/// image, or if its pixels would exceed the memory limit (texsyn/memory.h; checked from
-/// the header, before any pixel is decoded) or cannot be allocated.
+/// image, or if `copies` float copies of its pixels (what the caller will hold at once)
+/// would exceed the memory limit (texsyn/memory.h; checked from the header, before any
+/// pixel is decoded), or if they cannot be allocated.
 bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error,
-    OIIO::ImageSpec* native = nullptr);
+    OIIO::ImageSpec* native = nullptr, int copies = 1);
 
 /// False (with "FILE: no such file", "FILE: is a directory, not WHAT" or "FILE: is not a
 /// regular file (a FIFO, device or socket), not WHAT") unless `filename` is a regular file

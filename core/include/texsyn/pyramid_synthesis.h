@@ -82,6 +82,11 @@ bool synthesize_from_statistics(OIIO::ImageBuf& dst, const TextureStatistics& st
 /// Bytes of memory a synthesis of this size needs (the estimate the size check uses).
 size_t pyramid_memory_estimate(int width, int height, int nchannels, const PyramidOptions& opt);
 
+/// Bytes of memory the analysis of a `width` x `height` sample needs (analyze_texture
+/// refuses a sample whose estimate exceeds memory_available(), before allocating).
+size_t pyramid_analysis_memory_estimate(
+    int width, int height, int nchannels, const PyramidOptions& opt);
+
 /// Heeger & Bergen 1995 §3.3 match-texture with §3.4 edge handling and §3.5 colour.
 /// Decorrelates the sample's colour channels (PCA), analyses each component (steerable
 /// or Laplacian pyramid of the sample's periodic component; exact or 256-bin histograms),

@@ -14,6 +14,8 @@
 #include <OpenImageIO/parallel.h>
 #include <OpenImageIO/strutil.h>
 
+#include "lut_files_pvt.h"
+
 namespace OCIO = OCIO_NAMESPACE;
 
 // Generated from ocio-configs/config.ocio by ocio-configs/embed.cmake.
@@ -60,6 +62,10 @@ std::unique_ptr<ColorConfig> ColorConfig::load(const std::string& explicit_path,
             impl->config = OCIO::Config::CreateFromFile(path.c_str());
         }
         impl->config->validate();
+        if (!detail::check_lut_files(impl->config, error)) {
+            error = "colour config '" + impl->source + "': " + error;
+            return nullptr;
+        }
     } catch (const std::exception& e) { // OCIO::Exception is a std::runtime_error
         error = "colour config '" + impl->source + "': " + e.what();
         return nullptr;

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // The registry row of the homogeneity check: a report on the current image, which stays.
 #include <texsyn/homogeneity.h>
+#include <texsyn/memory.h>
 #include <texsyn/methods.h>
+
+#include <algorithm>
 
 namespace texsyn::detail {
 
@@ -19,6 +22,17 @@ struct NoOptions {
 bool run_check(const MethodOptions&, const std::vector<MethodInput>& inputs, const OptionImages&,
     const RunSettings& settings, MethodResult& result, std::string& error)
 {
+    // Its planes and the working images of the measures: measured, about 33 bytes per
+    // pixel of an RGB sample beyond the float sample itself; a quarter more for the
+    // allocator.
+    const OIIO::ImageSpec& spec = inputs[0].image->spec();
+    const double need
+        = 1.25 * double(spec.width) * double(spec.height) * (8.0 * spec.nchannels + 12.0);
+    if (!check_memory(size_t(std::min(need, 1e18)),
+            "the check of the " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
+                + " sample",
+            error))
+        return false;
     PlanarImage planes;
     if (!planes_from_imagebuf(*inputs[0].image, planes, error))
         return false;

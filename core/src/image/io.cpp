@@ -21,7 +21,9 @@ bool check_regular_file(const std::string& filename, const std::string& what, st
     std::error_code ec;
     const fs::file_status status = fs::status(filename, ec);
     if (ec || !fs::exists(status)) {
-        error = filename + ": no such file";
+        error = filename
+            + (ec == std::errc::too_many_symbolic_link_levels ? ": is a loop of symbolic links"
+                                                              : ": no such file");
         return false;
     }
     if (fs::is_directory(status)) {
@@ -35,8 +37,39 @@ bool check_regular_file(const std::string& filename, const std::string& what, st
     return true;
 }
 
-bool read_image(
-    const std::string& filename, OIIO::ImageBuf& dst, std::string& error, OIIO::ImageSpec* native)
+namespace {
+
+/// Reads every pixel of `in`'s current subimage as float into `pixels` (the whole image,
+/// channel-interleaved), in bands of rows, and stops at the first band that fails or that
+/// leaves an error behind: some readers (libjpeg on a truncated file) report success and
+/// only record the error, and some (TIFF) record one error per missing row, which for a
+/// header claiming a billion rows would grow past OIIO's limit and abort the process.
+bool read_all_pixels(OIIO::ImageInput& in, float* pixels)
+{
+    const OIIO::ImageSpec& spec = in.spec();
+    if (spec.depth > 1)
+        return in.read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, pixels) && !in.has_error();
+    const int band = spec.tile_height > 0
+        ? std::max(spec.tile_height, 64 / spec.tile_height * spec.tile_height)
+        : 64;
+    const size_t row = size_t(spec.width) * size_t(spec.nchannels);
+    for (int y = spec.y; y < spec.y + spec.height; y += band) {
+        const int y1 = std::min(y + band, spec.y + spec.height);
+        float* dst = pixels + size_t(y - spec.y) * row;
+        const bool ok = spec.tile_width > 0
+            ? in.read_tiles(0, 0, spec.x, spec.x + spec.width, y, y1, spec.z, spec.z + 1, 0,
+                spec.nchannels, OIIO::TypeFloat, dst)
+            : in.read_scanlines(0, 0, y, y1, spec.z, 0, spec.nchannels, OIIO::TypeFloat, dst);
+        if (!ok || in.has_error())
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error,
+    OIIO::ImageSpec* native, int copies)
 {
     if (!check_regular_file(filename, "an image", error))
         return false;
@@ -63,7 +96,7 @@ bool read_image(
     // Refuse from the header, before any pixel is allocated or decoded: a few bytes of
     // PNG can claim 100000x100000 pixels.
     std::string refusal;
-    if (!check_memory(size_t(spec.image_bytes()),
+    if (!check_memory(size_t(std::min(1e18, double(spec.image_bytes()) * std::max(copies, 1))),
             "its " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
                 + (spec.depth > 1 ? "x" + std::to_string(spec.depth) : "") + " pixels",
             refusal)) {
@@ -75,7 +108,7 @@ bool read_image(
         return fail("not enough memory for its " + std::to_string(spec.width) + "x"
             + std::to_string(spec.height) + " pixels");
     // All pixels now, so truncation is found here and not mid-synthesis.
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, buf.localpixels()))
+    if (!read_all_pixels(*in, static_cast<float*>(buf.localpixels())))
         return fail(in->geterror());
     if (native)
         *native = in->spec();

@@ -155,9 +155,12 @@ bool check_memory(size_t need, const std::string& what, std::string& error)
     const size_t available = memory_available();
     if (need <= available)
         return true;
+    // What the process holds already (libraries, inputs) counts against the limit: say so,
+    // or a limit below it reads as a refusal of everything.
     error = what + " would need about " + format_bytes(double(need)) + " of memory (only "
         + format_bytes(double(available)) + " available of a limit of "
-        + format_bytes(double(memory_limit())) + ": see --max-memory)";
+        + format_bytes(double(memory_limit())) + ", of which the process holds "
+        + format_bytes(double(statm_bytes(1))) + ": see --max-memory)";
     return false;
 }
 

@@ -98,7 +98,9 @@ bool verify_image_file(
                     0, 0, y, yend, z, 0, spec.nchannels, OIIO::TypeUnknown, pixels.data());
             }
     }
-    if (!ok) {
+    // Some readers (libjpeg on a truncated file) decode what is there, report success and
+    // only record the error.
+    if (!ok || in->has_error()) {
         reason = "the written file is incomplete (disk full?): " + one_line(in->geterror());
         return false;
     }

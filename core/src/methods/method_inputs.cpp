@@ -23,6 +23,11 @@ bool read_sample(const std::string& filename, const ColorConfig& colors,
         auto stats = std::make_shared<TextureStatistics>();
         if (!read_statistics(filename, *stats, error))
             return false;
+        if (colors.resolve(stats->colorspace).empty()) {
+            error = filename + ": its sample's colour space '" + stats->colorspace
+                + "' is not in the colour config " + colors.source();
+            return false;
+        }
         s.colorspace = stats->colorspace;
         s.file_format
             = stats->sample_format.empty() ? OIIO::TypeFloat : OIIO::TypeDesc(stats->sample_format);
@@ -30,8 +35,10 @@ bool read_sample(const std::string& filename, const ColorConfig& colors,
         sample = std::move(s);
         return true;
     }
+    // Held at once: the file's pixels, their scene-linear copy, and the colour
+    // conversion's two working copies.
     OIIO::ImageSpec native;
-    if (!read_image(filename, s.file_pixels, error, &native))
+    if (!read_image(filename, s.file_pixels, error, &native, 4))
         return false;
     s.file_format = native.format;
     if (!relinearize_sample(s, colors,

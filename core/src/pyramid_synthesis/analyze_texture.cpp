@@ -39,6 +39,13 @@ bool analyse(const OIIO::ImageBuf& sample, const PyramidOptions& opt, TextureSta
 {
     if (!opt.validate(error))
         return false;
+    const OIIO::ImageSpec& spec = sample.spec();
+    if (!detail::check_memory(
+            pyramid_analysis_memory_estimate(spec.width, spec.height, spec.nchannels, opt),
+            "the analysis of the " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
+                + " sample",
+            error))
+        return false;
     PlanarImage src;
     if (!planes_from_imagebuf(sample, src, error)) {
         error = "sample: " + error;

@@ -42,6 +42,10 @@ size_t json_nesting_depth(std::string_view text, size_t limit)
 
 nlohmann::json parse_json_strict(std::string_view text, size_t max_depth)
 {
+    // nlohmann's parser takes a NUL byte for the end of the input and would ignore what
+    // follows it.
+    if (const size_t nul = text.find('\0'); nul != std::string_view::npos)
+        throw std::runtime_error("a NUL byte at offset " + std::to_string(nul));
     if (json_nesting_depth(text, max_depth) > max_depth)
         throw std::runtime_error("nested more than " + std::to_string(max_depth) + " deep");
     std::vector<std::set<std::string>> keys; // of each object being parsed

@@ -146,7 +146,8 @@ int integer_of(const nlohmann::json& v, const std::string& what)
 {
     if (!v.is_number_integer() || v.get<int64_t>() < INT32_MIN || v.get<int64_t>() > INT32_MAX
         || (v.is_number_unsigned() && v.get<uint64_t>() > uint64_t(INT32_MAX)))
-        throw std::runtime_error(what + " is not an integer (" + v.dump() + ")");
+        throw std::runtime_error(what + " is not an integer from " + std::to_string(INT32_MIN)
+            + " to " + std::to_string(INT32_MAX) + " (" + v.dump() + ")");
     return v.get<int>();
 }
 
