@@ -356,6 +356,11 @@ TEST_F(Robustness, TruncatedAndLyingFilesAreRefused)
         EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20)) << name;
     }
     EXPECT_NE(texsyn("half.jpg --check").err.find("Premature end of JPEG file"), std::string::npos);
+    // TIFF strips are checked against the file's size: OIIO reads JPEG-compressed TIFF
+    // through libtiff's RGBA interface, which filled a missing strip from the ones before.
+    EXPECT_EQ(texsyn("cut.tif --check").first_err_line(),
+        "texsyn ERROR: cut.tif: cannot read image (it is cut short: strip or tile 0 of 1 ends at "
+        "byte 12410 of a file of 1122)");
 }
 
 // No two outputs may name one file, however spelled: the last used to replace the others
@@ -401,10 +406,24 @@ TEST_F(Robustness, LutFilesThatAreNotRegularFilesAreRefused)
             + (dir / "lut.spi1d").string()
             + ": is not a regular file (a FIFO, device or socket), not a LUT file",
         { "stucco.png", "fifo.ocio", "zero.ocio", "lut.spi1d" });
+    // OCIO reads a LUT whole: a sparse file of gigabytes took minutes and memory past any
+    // limit.
+    spit(dir / "huge.spi1d", "");
+    fs::resize_file(dir / "huge.spi1d", uintmax_t(1) << 30);
+    spit(dir / "huge.ocio",
+        config
+            + "\n  - !<ColorSpace>\n    name: evil\n    isdata: false\n"
+              "    to_scene_reference: !<FileTransform> {src: huge.spi1d, interpolation: "
+              "linear}\n");
+    expect_failure("--colorconfig huge.ocio stucco.png --pyramid -o o.png",
+        "texsyn ERROR: colour config 'huge.ocio': its FileTransform 'huge.spi1d': "
+            + (dir / "huge.spi1d").string()
+            + " is 1.0 GB, more than any LUT texsyn reads (128.0 MB)",
+        { "stucco.png", "fifo.ocio", "zero.ocio", "lut.spi1d", "huge.ocio", "huge.spi1d" });
     expect_failure_starting("--colorconfig zero.ocio stucco.png --pyramid -o o.png",
         "texsyn ERROR: colour config 'zero.ocio': its FileTransform '/dev/zero': /dev/zero: is not "
         "a regular file",
-        { "stucco.png", "fifo.ocio", "zero.ocio", "lut.spi1d" });
+        { "stucco.png", "fifo.ocio", "zero.ocio", "lut.spi1d", "huge.ocio", "huge.spi1d" });
 }
 
 // The memory estimate covers what reading a sample and analysing it hold, not only the

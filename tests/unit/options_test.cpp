@@ -174,5 +174,7 @@ TEST(Options, EchoedTextIsPrintableAndCut)
     const std::string name(5004, 'a');
     EXPECT_EQ(readable_message(name + ": no such file"),
         std::string(60, 'a') + "...(5004 characters): no such file");
+    EXPECT_EQ(readable_message("unknown key '" + name + "'"),
+        "unknown key '" + std::string(60, 'a') + "...(5004 characters)'");
     EXPECT_EQ(readable_message("short words stay"), "short words stay");
 }

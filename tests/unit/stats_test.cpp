@@ -242,6 +242,8 @@ TEST_F(AnalysisFile, VersionOneFilesWithTheirOldChecksumAreStillRead)
 TEST_F(AnalysisFile, WrongVersionsAndInconsistentHeadersAreRejected)
 {
     const std::string h = header_of(*bytes);
+    expect_rejected(with_header(*bytes, replace_once(h, "\"format\":\"", "\"format\":\"int128")),
+        "invalid header: sample format 'int128");
     expect_rejected(with_header(*bytes, replace_once(h, "\"version\":2", "\"version\":3")),
         "version 3 (this texsyn reads versions 1 to 2)");
     expect_rejected(with_header(*bytes, replace_once(h, "\"version\":2", "\"version\":\"2\"")),

@@ -13,9 +13,9 @@ namespace texsyn {
 std::string printable_text(std::string_view text);
 
 /// An error message ready to print: printable_text(), with every word longer than 120
-/// characters cut to its first 60 and its length ("aaaa...(100000 characters)"; a colon
-/// ending the word is kept after the cut), so that echoing a 100 kB argument or name does
-/// not make a 100 kB line.
+/// characters cut to its first 60 and its length ("aaaa...(100000 characters)"; quotes
+/// around the word and a colon or comma ending it are kept and not counted), so that
+/// echoing a 100 kB argument or name does not make a 100 kB line.
 std::string readable_message(std::string_view message);
 
 } // namespace texsyn

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut_files_pvt.h"
 
+#include <filesystem>
+
 #include <texsyn/io.h>
+#include <texsyn/memory.h>
 
 namespace texsyn::detail {
 
@@ -29,10 +32,21 @@ bool check_transform(
     } catch (const std::exception&) {
         return true; // not found: OCIO says so if the transform is used
     }
-    if (check_regular_file(path, "a LUT file", error))
-        return true;
-    error = "its FileTransform '" + std::string(file->getSrc()) + "': " + error;
-    return false;
+    if (!check_regular_file(path, "a LUT file", error)) {
+        error = "its FileTransform '" + std::string(file->getSrc()) + "': " + error;
+        return false;
+    }
+    // OCIO reads a LUT whole, and parses for minutes a file of gigabytes (a sparse one is
+    // made in an instant), beyond any memory limit.
+    std::error_code ec;
+    const uintmax_t bytes = std::filesystem::file_size(path, ec);
+    if (!ec && bytes > max_lut_file_bytes) {
+        error = "its FileTransform '" + std::string(file->getSrc()) + "': " + path + " is "
+            + format_bytes(double(bytes)) + ", more than any LUT texsyn reads ("
+            + format_bytes(double(max_lut_file_bytes)) + ")";
+        return false;
+    }
+    return true;
 }
 
 } // namespace

@@ -90,6 +90,9 @@ bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& e
     auto in = OIIO::ImageInput::open(filename, &config);
     if (!in)
         return fail(OIIO::geterror());
+    if (std::string reason;
+        std::string(in->format_name()) == "tiff" && !tiff_data_fits_in_file(filename, reason))
+        return fail(reason);
     OIIO::ImageSpec spec = in->spec();
     spec.format = OIIO::TypeFloat;
     spec.channelformats.clear();

@@ -160,7 +160,7 @@ bool check_memory(size_t need, const std::string& what, std::string& error)
     error = what + " would need about " + format_bytes(double(need)) + " of memory (only "
         + format_bytes(double(available)) + " available of a limit of "
         + format_bytes(double(memory_limit())) + ", of which the process holds "
-        + format_bytes(double(statm_bytes(1))) + ": see --max-memory)";
+        + format_bytes(double(statm_bytes(1))) + ": see --max-memory or $TEXSYN_MAX_MEMORY)";
     return false;
 }
 

@@ -72,12 +72,15 @@ std::string readable_message(std::string_view message)
         const size_t end = std::min(text.find(' ', i), text.size());
         size_t word = end - i;
         if (word > 120) {
-            const bool colon = text[end - 1] == ':';
-            word -= colon ? 1 : 0;
-            out.append(text, i, 60);
-            out += "...(" + std::to_string(word) + " characters)";
-            if (colon)
-                out += ':';
+            // Quotes and punctuation around the word stay, uncounted: 'aaaa...(N characters)':
+            const size_t lead = std::string_view("'\"(").find(text[i]) != std::string_view::npos;
+            size_t trail = 0;
+            while (trail < 3
+                && std::string_view("'\":,)").find(text[end - 1 - trail]) != std::string_view::npos)
+                ++trail;
+            out.append(text, i, lead + 60);
+            out += "...(" + std::to_string(word - lead - trail) + " characters)";
+            out.append(text, end - trail, trail);
         } else {
             out.append(text, i, word);
         }

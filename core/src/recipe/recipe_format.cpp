@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -379,6 +380,7 @@ bool apply_arguments(
     const std::string& arguments, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
     KeyValues pairs;
+    std::set<std::string> seen; // a name may hold a million keys: no linear search
     for (const std::string& piece : OIIO::Strutil::splits(arguments, "&")) {
         size_t eq = piece.find('=');
         if (eq == std::string::npos || eq == 0) {
@@ -386,11 +388,10 @@ bool apply_arguments(
             return false;
         }
         const std::string key = piece.substr(0, eq);
-        for (auto& seen : pairs)
-            if (seen.first == key) {
-                error = option_error(key, piece.substr(eq + 1), "given twice");
-                return false;
-            }
+        if (!seen.insert(key).second) {
+            error = option_error(key, piece.substr(eq + 1), "given twice");
+            return false;
+        }
         std::vector<std::string> values;
         for (const std::string& v : (key == "sample" || key == "iscolorspace")
                 ? OIIO::Strutil::splits(piece.substr(eq + 1), ",")

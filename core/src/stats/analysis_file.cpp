@@ -23,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include <OpenImageIO/strutil.h>
+#include <OpenImageIO/typedesc.h>
 
 #include <texsyn/error_text.h>
 #include <texsyn/io.h>
@@ -167,6 +168,10 @@ int parse_header(const nlohmann::json& j, TextureStatistics& s, std::vector<size
     s.source = sample.at("source").get<std::string>();
     s.colorspace = sample.at("colorspace").get<std::string>();
     s.sample_format = sample.at("format").get<std::string>();
+    if (!s.sample_format.empty() && OIIO::TypeDesc(s.sample_format) == OIIO::TypeUnknown)
+        fail("sample format '" + s.sample_format
+            + "' is not a pixel type (uint8, uint16, half, "
+              "float, ...)");
     s.flattened = sample.at("flattened").get<bool>();
     if (s.sample_width < 16 || s.sample_height < 16 || s.sample_width > max_side
         || s.sample_height > max_side)
