@@ -17,6 +17,8 @@ endif()
 
 find_package(Imath CONFIG REQUIRED)
 find_package(Eigen3 3.3 CONFIG REQUIRED)
+# libtiff: decodes every strip of JPEG-compressed TIFF inputs (src/image/tiff_extent.cpp).
+find_package(TIFF 4.5 REQUIRED)
 find_package(nlohmann_json 3 CONFIG REQUIRED)
 # Header-only (the kd-tree search back-end); Debian's config is in /usr/share/nanoflann/cmake.
 find_package(nanoflann CONFIG REQUIRED)

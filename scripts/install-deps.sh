@@ -12,6 +12,7 @@ packages=(
   libkissfft-dev                            # default (permissive) FFT backend
   libfftw3-dev                              # optional GPL backend (-DTEXSYN_WITH_FFTW=ON)
   libeigen3-dev nlohmann-json3-dev
+  libtiff-dev                               # checks that JPEG-compressed TIFF inputs decode whole
   libnanoflann-dev                          # kd-tree search (--neighborhood:search=kdtree)
   libopenvdb-dev libboost-iostreams-dev      # solid textures: .vdb output (OpenVDB's CMake module needs Boost.Iostreams)
   python3-openimageio                       # tests open recipes from Python

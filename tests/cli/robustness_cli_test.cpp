@@ -363,6 +363,33 @@ TEST_F(Robustness, TruncatedAndLyingFilesAreRefused)
         "byte 12410 of a file of 1122)");
 }
 
+// A JPEG-compressed TIFF whose second strip is damaged inside the file: OIIO reads such
+// files through libtiff's RGBA interface, which repeated the first strip's rows and
+// reported success. Every strip is now decoded once with libtiff.
+TEST_F(Robustness, DamagedStripsOfJpegTiffsAreRefused)
+{
+    OIIO::ImageSpec spec(64, 128, 3, OIIO::TypeUInt8); // OIIO writes 64 rows per strip
+    spec.attribute("compression", "jpeg");
+    OIIO::ImageBuf image(spec);
+    OIIO::ImageBufAlgo::checker(image, 8, 8, 1, { 0.9f, 0.5f, 0.1f }, { 0.1f, 0.2f, 0.7f });
+    ASSERT_TRUE(image.write((dir / "good.tif").string())) << image.geterror();
+    ASSERT_EQ(texsyn("good.tif --check").status, 0);
+    // Each strip is a JPEG stream with a scan (SOI FF D8 ... SOS FF DA); the shared tables
+    // are a stream without one. Damage the second strip.
+    std::string bytes = slurp(dir / "good.tif");
+    std::vector<size_t> strips;
+    for (size_t at = bytes.find("\xff\xd8\xff"); at != std::string::npos;
+         at = bytes.find("\xff\xd8\xff", at + 3))
+        if (bytes.find("\xff\xda", at) < bytes.find("\xff\xd9", at))
+            strips.push_back(at);
+    ASSERT_EQ(strips.size(), 2u);
+    bytes.replace(strips[1], 16, std::string(16, '\0'));
+    spit(dir / "damaged.tif", bytes);
+    expect_failure_starting("damaged.tif --check",
+        "texsyn ERROR: damaged.tif: cannot read image (strip or tile 1 of 2 does not decode",
+        { "stucco.png", "good.tif", "damaged.tif" });
+}
+
 // No two outputs may name one file, however spelled: the last used to replace the others
 // silently.
 TEST_F(Robustness, TwoOutputsNamingOneFileAreRefused)

@@ -11,8 +11,9 @@ namespace texsyn {
 std::string one_line(std::string s);
 
 /// False, with the reason, if the strips or tiles the first directory of the TIFF file
-/// `path` points at do not all lie inside the file (a file cut short). True for anything
-/// that is not a TIFF this check can read: the image reader then decides.
+/// `path` points at do not all lie inside the file (a file cut short), or, for a
+/// JPEG-compressed TIFF, do not all decode. True for anything that is not a TIFF this
+/// check can read: the image reader then decides.
 bool tiff_data_fits_in_file(const std::string& path, std::string& reason);
 
 } // namespace texsyn

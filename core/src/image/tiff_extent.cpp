@@ -1,14 +1,20 @@
 // SPDX-License-Identifier: Apache-2.0
 // Whether a TIFF file holds the pixel data its first directory points at. libtiff reports
-// a strip or tile cut short for most compressions, but OIIO reads JPEG-compressed TIFF
-// through libtiff's RGBA interface, which fills the missing rows from the strips it did
-// read and reports success: the directory's offsets and byte counts are checked instead.
+// a strip or tile cut short or damaged for most compressions, but OIIO 2.4 reads
+// JPEG-compressed TIFF through libtiff's RGBA interface, which fills the rows of a strip it
+// cannot decode from the strips before and reports success. So the directory's offsets and
+// byte counts are checked against the file's size, and every strip or tile of a JPEG TIFF
+// is decoded once with libtiff.
 #include "io_pvt.h"
 
 #include <algorithm>
+#include <cstdarg>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <vector>
+
+#include <tiffio.h>
 
 namespace texsyn {
 
@@ -69,6 +75,59 @@ bool entry_values(TiffReader& f, uint64_t entry, bool big_tiff, std::vector<uint
     return true;
 }
 
+/// libtiff's messages for one file, kept (the first) instead of printed.
+int keep_first_message(TIFF*, void* user_data, const char*, const char* fmt, va_list ap)
+{
+    auto* message = static_cast<std::string*>(user_data);
+    if (message && message->empty()) {
+        char text[512];
+        std::vsnprintf(text, sizeof(text), fmt, ap);
+        *message = text;
+    }
+    return 1;
+}
+
+/// False, with the reason, if a strip or tile of the JPEG-compressed TIFF `path` does not
+/// decode; true for any other file (its reader reports its own errors).
+bool jpeg_tiff_strips_decode(const std::string& path, std::string& reason)
+{
+    // A warning while decoding means damage too: libjpeg warns of a strip that ends early
+    // ("Premature end of JPEG file") and fills the rest with grey. Warnings while opening
+    // (unknown tags) do not count.
+    std::string message, warning;
+    TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
+    TIFFOpenOptionsSetErrorHandlerExtR(options, keep_first_message, &message);
+    TIFFOpenOptionsSetWarningHandlerExtR(options, keep_first_message, &warning);
+    TIFF* tif = TIFFOpenExt(path.c_str(), "r", options);
+    TIFFOpenOptionsFree(options);
+    if (!tif)
+        return true;
+    warning.clear();
+    uint16_t compression = COMPRESSION_NONE;
+    TIFFGetFieldDefaulted(tif, TIFFTAG_COMPRESSION, &compression);
+    bool ok = true;
+    if (compression == COMPRESSION_JPEG || compression == COMPRESSION_OJPEG) {
+        const bool tiled = TIFFIsTiled(tif);
+        const tmsize_t size = tiled ? TIFFTileSize(tif) : TIFFStripSize(tif);
+        const uint32_t count = tiled ? TIFFNumberOfTiles(tif) : TIFFNumberOfStrips(tif);
+        std::vector<unsigned char> buffer(size_t(std::max<tmsize_t>(size, 1)));
+        for (uint32_t i = 0; ok && i < count; ++i) {
+            ok = size > 0
+                && (tiled ? TIFFReadEncodedTile(tif, i, buffer.data(), size)
+                          : TIFFReadEncodedStrip(tif, i, buffer.data(), size))
+                    > 0
+                && warning.empty();
+            if (!ok) {
+                const std::string& why = message.empty() ? warning : message;
+                reason = "strip or tile " + std::to_string(i) + " of " + std::to_string(count)
+                    + " does not decode" + (why.empty() ? "" : " (" + why + ")");
+            }
+        }
+    }
+    TIFFClose(tif);
+    return ok;
+}
+
 } // namespace
 
 bool tiff_data_fits_in_file(const std::string& path, std::string& reason)
@@ -113,7 +172,7 @@ bool tiff_data_fits_in_file(const std::string& path, std::string& reason)
                 + std::to_string(f.size());
             return false;
         }
-    return true;
+    return jpeg_tiff_strips_decode(path, reason);
 }
 
 } // namespace texsyn
