@@ -39,7 +39,7 @@ std::string legend(const Method& m, const std::vector<StackItem>& inputs)
 }
 
 // The recipe of `m`'s result on `inputs`, if every input is a file; else null and `why`.
-std::shared_ptr<const Recipe> recipe_of(const CliState& state, const Method& m,
+std::shared_ptr<const Recipe> recipe_of(CliState& state, const Method& m,
     const MethodOptions& options, const std::vector<StackItem>& inputs, std::string& why)
 {
     if (!m.makes_recipes()) {
@@ -52,9 +52,11 @@ std::shared_ptr<const Recipe> recipe_of(const CliState& state, const Method& m,
     recipe->options = options;
     recipe->seed = state.seed;
     recipe->subbands = state.subbands && m.subbands;
-    recipe->colorconfig = state.colorconfig_path;
-    if (const char* env = std::getenv("OCIO"); recipe->colorconfig.empty() && env)
-        recipe->colorconfig = env;
+    // Only a config the user named is pinned (the bundled one by name): otherwise the
+    // recipe follows $OCIO, or the bundled config, wherever it is opened.
+    if (!state.colorconfig_path.empty())
+        recipe->colorconfig
+            = state.colors().is_bundled() ? ColorConfig::bundled_name : state.colorconfig_path;
     std::vector<std::string> spaces;
     for (const StackItem& item : inputs) {
         if (item.file.empty()) {

@@ -441,3 +441,68 @@ TEST_F(Plugin, SolidRecipesAreTheirZSlices)
     ASSERT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find("MIP-map levels: 24x16 12x8"), std::string::npos) << r.out;
 }
+
+// A recipe pins a colour config only when the user named one (the bundled config by name,
+// never by a path): written with $OCIO set, moved with its sample to another tree, it still
+// opens in stock oiiotool, and follows $OCIO where it is opened.
+TEST_F(Plugin, RecipesArePortableAndFollowOcio)
+{
+    std::ifstream bundled(TEXSYN_BUNDLED_OCIO_CONFIG);
+    std::stringstream config;
+    config << bundled.rdbuf();
+    fs::create_directories(dir / "cfg");
+    write("cfg/config.ocio", config.str());
+    write("cfg/acescg.ocio",
+        std::regex_replace(
+            config.str(), std::regex("scene_linear: [^\n]*"), "scene_linear: ACEScg"));
+    fs::create_directories(dir / "shot");
+    fs::copy_file(dir / "s.png", dir / "shot/s.png");
+    ToolRun r = sh("cd shot && OCIO=../cfg/config.ocio '" + texsyn_exe
+        + "' s.png --pyramid:size=48x32 --recipe env.texsyn -d float -o env.exr && '" + texsyn_exe
+        + "' --colorconfig ../cfg/config.ocio s.png --pyramid:size=48x32 --recipe named.texsyn "
+          "-o named.exr && '"
+        + texsyn_exe
+        + "' --colorconfig ../cfg/acescg.ocio s.png --pyramid:size=48x32 --recipe own.texsyn -o "
+          "own.exr");
+    ASSERT_EQ(r.status, 0) << r.out;
+    auto slurp = [&](const std::string& name) {
+        std::ifstream in(dir / name);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    };
+    EXPECT_EQ(slurp("shot/env.texsyn").find("colorconfig"), std::string::npos)
+        << slurp("shot/env.texsyn");
+    EXPECT_NE(
+        slurp("shot/named.texsyn").find("\"colorconfig\": \"texsyn://bundled\""), std::string::npos)
+        << slurp("shot/named.texsyn");
+    EXPECT_NE(
+        slurp("shot/own.texsyn").find("\"colorconfig\": \"../cfg/acescg.ocio\""), std::string::npos)
+        << slurp("shot/own.texsyn");
+
+    // Moved to another tree, with the configs gone: the same pixels from stock oiiotool.
+    fs::create_directories(dir / "elsewhere/deep");
+    fs::rename(dir / "shot", dir / "elsewhere/deep/shot");
+    fs::remove(dir / "cfg/config.ocio");
+    r = sh("cd elsewhere/deep/shot && oiiotool env.texsyn -d float -o moved.exr && idiff -fail 0 "
+           "env.exr moved.exr && iinfo -v named.texsyn");
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("synth:colorspace: \"Linear Rec.709 (sRGB)\""), std::string::npos)
+        << r.out;
+    // $OCIO at open time: a config whose scene_linear is ACEScg makes the result ACEScg;
+    // a recipe pinned to the bundled config ignores it.
+    r = sh("cd elsewhere/deep/shot && OCIO=../../../cfg/acescg.ocio iinfo -v env.texsyn "
+           "named.texsyn");
+    EXPECT_EQ(r.status, 0) << r.out;
+    const size_t named = r.out.find("named.texsyn");
+    ASSERT_NE(named, std::string::npos) << r.out;
+    EXPECT_NE(r.out.substr(0, named).find("synth:colorspace: \"ACEScg\""), std::string::npos)
+        << r.out;
+    EXPECT_NE(
+        r.out.substr(named).find("synth:colorspace: \"Linear Rec.709 (sRGB)\""), std::string::npos)
+        << r.out;
+    // A pinned config that moved away is named in the error.
+    r = sh("cd elsewhere/deep/shot && iinfo own.texsyn");
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_NE(r.out.find("acescg.ocio"), std::string::npos) << r.out;
+}

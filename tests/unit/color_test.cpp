@@ -249,7 +249,8 @@ TEST(Decorrelation, MixtureMomentsAreThePooledPixelsMoments)
 
 TEST_F(Ocio, BundledConfigLoadsAndResolves)
 {
-    EXPECT_EQ(config->source(), "<bundled>");
+    EXPECT_EQ(config->source(), ColorConfig::bundled_name);
+    EXPECT_TRUE(config->is_bundled());
     EXPECT_EQ(config->scene_linear(), "Linear Rec.709 (sRGB)");
     const std::vector<std::string> expected
         = { "Linear Rec.709 (sRGB)", "sRGB - Texture", "ACEScg", "Raw" };

@@ -22,16 +22,27 @@ public:
     ColorConfig(ColorConfig&&) noexcept;
     ColorConfig& operator=(ColorConfig&&) noexcept;
 
-    /// Loads, in order of precedence: `explicit_path` if not empty, else $OCIO if set,
-    /// else texsyn's bundled config (compiled into the library; the same file is installed
-    /// as share/texsyn/ocio/config.ocio). Returns nullptr and sets `error` (naming the file
-    /// and OCIO's message) if the config cannot be read or does not validate.
+    /// The name that selects texsyn's bundled config wherever a config is named
+    /// (--colorconfig, a recipe's "colorconfig"), whatever $OCIO says. Recipes record the
+    /// bundled config by this name, never by a path that another machine may not have.
+    static constexpr const char* bundled_name = "texsyn://bundled";
+
+    /// Loads, in order of precedence: `explicit_path` if not empty (bundled_name: the
+    /// bundled config), else $OCIO if set, else texsyn's bundled config (compiled into the
+    /// library; the same file is installed as share/texsyn/ocio/config.ocio). Returns
+    /// nullptr and sets `error` (naming the file and OCIO's message) if the config cannot
+    /// be read or does not validate.
     static std::unique_ptr<ColorConfig> load(const std::string& explicit_path, std::string& error);
     /// texsyn's bundled config text (YAML).
     static const char* bundled_config_text();
 
-    /// Where the config came from: a file path or "<bundled>".
+    /// Where the config came from: a file path, or bundled_name.
     const std::string& source() const;
+    /// Whether this is the bundled config: loaded by its name or by default, or from a
+    /// file whose text is the bundled config's (an installed copy).
+    bool is_bundled() const;
+    /// Why this config: "--colorconfig", "$OCIO" or "default" (as load() chose it).
+    const std::string& origin() const;
     /// Canonical name of the colour space `name` (aliases and role names resolve), or ""
     /// if the config has no such space.
     std::string resolve(const std::string& name) const;

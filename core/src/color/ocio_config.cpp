@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <mutex>
 #include <sstream>
@@ -26,7 +29,25 @@ namespace texsyn {
 struct ColorConfig::Impl {
     OCIO::ConstConfigRcPtr config;
     std::string source;
+    std::string origin;
+    bool bundled = false;
 };
+
+namespace {
+
+// Whether the file at `path` holds exactly `text` (sizes are compared first).
+bool file_holds(const std::string& path, const char* text)
+{
+    const size_t n = std::strlen(text);
+    std::error_code ec;
+    if (std::filesystem::file_size(path, ec) != n || ec)
+        return false;
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(n, '\0');
+    return in.read(bytes.data(), std::streamsize(n)) && bytes == text;
+}
+
+} // namespace
 
 ColorConfig::ColorConfig(std::unique_ptr<Impl> impl)
     : m_impl(std::move(impl))
@@ -42,14 +63,18 @@ const char* ColorConfig::bundled_config_text()
 
 std::unique_ptr<ColorConfig> ColorConfig::load(const std::string& explicit_path, std::string& error)
 {
+    auto impl = std::make_unique<Impl>();
     std::string path = explicit_path;
+    impl->origin = "--colorconfig";
     if (path.empty()) {
         const char* env = std::getenv("OCIO");
+        impl->origin = env && *env ? "$OCIO" : "default";
         if (env && *env)
             path = env;
     }
-    auto impl = std::make_unique<Impl>();
-    impl->source = path.empty() ? "<bundled>" : path;
+    if (path == bundled_name)
+        path.clear();
+    impl->source = path.empty() ? bundled_name : path;
     if (!path.empty() && !check_regular_file(path, "an OCIO config", error)) {
         error = "colour config '" + path + "': " + error.substr(path.size() + 2);
         return nullptr;
@@ -58,8 +83,10 @@ std::unique_ptr<ColorConfig> ColorConfig::load(const std::string& explicit_path,
         if (path.empty()) {
             std::istringstream text(texsyn_bundled_ocio_config);
             impl->config = OCIO::Config::CreateFromStream(text);
+            impl->bundled = true;
         } else {
             impl->config = OCIO::Config::CreateFromFile(path.c_str());
+            impl->bundled = file_holds(path, texsyn_bundled_ocio_config);
         }
         impl->config->validate();
         if (!detail::check_lut_files(impl->config, error)) {
@@ -79,6 +106,16 @@ std::unique_ptr<ColorConfig> ColorConfig::load(const std::string& explicit_path,
 const std::string& ColorConfig::source() const
 {
     return m_impl->source;
+}
+
+bool ColorConfig::is_bundled() const
+{
+    return m_impl->bundled;
+}
+
+const std::string& ColorConfig::origin() const
+{
+    return m_impl->origin;
 }
 
 std::string ColorConfig::resolve(const std::string& name) const

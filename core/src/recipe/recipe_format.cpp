@@ -15,6 +15,7 @@
 #include <OpenImageIO/strutil.h>
 #include <nlohmann/json.hpp>
 
+#include <texsyn/color.h>
 #include <texsyn/error_text.h>
 #include <texsyn/io.h>
 #include <texsyn/stats.h>
@@ -150,7 +151,7 @@ bool set_key(Recipe& r, const std::string& key, const std::vector<std::string>& 
         return true;
     }
     if (key == "colorconfig") {
-        r.colorconfig = resolve_path(value, base_dir);
+        r.colorconfig = value == ColorConfig::bundled_name ? value : resolve_path(value, base_dir);
         return true;
     }
     if (key == "tocolorspace") {
@@ -541,7 +542,9 @@ std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir)
     if (!recipe.tocolorspace.empty())
         j["tocolorspace"] = recipe.tocolorspace;
     if (!recipe.colorconfig.empty())
-        j["colorconfig"] = relative(recipe.colorconfig);
+        j["colorconfig"] = recipe.colorconfig == ColorConfig::bundled_name
+            ? recipe.colorconfig
+            : relative(recipe.colorconfig);
     if (recipe.subbands)
         j["subbands"] = true;
     try {
