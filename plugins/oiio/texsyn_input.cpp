@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // texsyn.imageio.so: an OIIO ImageInput that opens synthesis recipes (*.texsyn) as images,
 // so that stock oiiotool, iinfo, maketx and any OIIO application can use them. Parsing and
-// dispatch only: the recipe is run by libtexsyn's run_recipe(), once per open().
+// dispatch only: open() answers with libtexsyn's recipe_spec(), and the recipe is run by
+// run_recipe() on the first read of pixels.
 //
 // The plugin does not claim "procedural": stock oiiotool 2.4.7 crashes when a procedural
 // plugin accepts a name in valid_file() and then fails open().
@@ -56,29 +57,53 @@ public:
         return false;
     }
 
+    // Answers with the result's spec from the recipe and its samples' headers (recipe_spec):
+    // the synthesis runs on the first read of pixels. A recipe with subbands is made here,
+    // as its further subimages are known only then.
     bool open(const std::string& name, ImageSpec& newspec) override
     {
         close();
-        texsyn::Recipe recipe;
         std::string error;
-        if (!texsyn::recipe_from_filename(name, recipe, error)) {
+        if (!texsyn::recipe_from_filename(name, m_recipe, error)
+            || !texsyn::recipe_spec(m_recipe, m_spec, error)) {
             errorfmt("{}", texsyn::readable_message(error));
             return false;
         }
-        m_images = cached_synthesis(name, recipe, error);
-        if (!m_images) {
-            errorfmt("{}", texsyn::readable_message(error));
-            return false;
+        m_name = name;
+        m_announced.clear();
+        if (const int depth = m_spec.depth; depth > 1) {
+            // A volume: its z slices, named as in the slice EXR (volume.h).
+            ImageSpec slice = m_spec;
+            slice.depth = slice.full_depth = 1;
+            slice.erase_attribute("oiio:UnassociatedAlpha"); // slices are associated
+            for (int z = 0; z < depth; ++z) {
+                slice.attribute("oiio:subimagename", texsyn::volume_exr_part_name(z, depth));
+                m_announced.push_back(slice);
+            }
+        } else {
+            m_spec.attribute("oiio:subimagename", "synth");
+            m_announced.push_back(m_spec);
+        }
+        if (m_recipe.subbands) {
+            const Images* images = synthesized();
+            if (!images) {
+                close();
+                return false;
+            }
+            m_announced[0].full_width = (*images)[0].spec().full_width;
+            m_announced[0].full_height = (*images)[0].spec().full_height;
         }
         m_subimage = 0;
-        m_spec = (*m_images)[0].spec();
+        m_spec = m_announced[0];
         newspec = m_spec;
         return true;
     }
 
     bool close() override
     {
+        std::lock_guard<std::mutex> lock(m_mutex);
         m_images.reset();
+        m_announced.clear();
         m_subimage = 0;
         return true;
     }
@@ -87,34 +112,68 @@ public:
 
     bool seek_subimage(int subimage, int miplevel) override
     {
-        if (!m_images || subimage < 0 || subimage >= int(m_images->size()) || miplevel != 0)
+        if (subimage < 0 || miplevel != 0 || m_announced.empty())
             return false;
+        if (size_t(subimage) < m_announced.size()) {
+            m_spec = m_announced[size_t(subimage)];
+        } else {
+            const Images* images = m_recipe.subbands ? synthesized() : nullptr;
+            if (!images || size_t(subimage) >= images->size())
+                return false;
+            m_spec = (*images)[size_t(subimage)].spec();
+        }
         m_subimage = subimage;
-        m_spec = (*m_images)[size_t(subimage)].spec();
         return true;
     }
 
-    // The images are complete in memory and never change: rows of any subimage can be
-    // served without seeking, from any thread.
+    // The images are complete in memory once made and never change: rows of any subimage
+    // can be served without seeking, from any thread.
     bool read_native_scanline(int subimage, int miplevel, int y, int z, void* data) override
     {
-        if (!m_images || subimage < 0 || subimage >= int(m_images->size()) || miplevel != 0)
+        const Images* images = synthesized();
+        if (!images || subimage < 0 || subimage >= int(images->size()) || miplevel != 0)
             return false;
-        const ImageBuf& img = (*m_images)[size_t(subimage)];
+        const ImageBuf& img = (*images)[size_t(subimage)];
         const ImageSpec& spec = img.spec();
         return img.get_pixels(
             ROI(spec.x, spec.x + spec.width, y, y + 1, z, z + 1), TypeFloat, data);
     }
 
 private:
+    // 0: the synthesis, then its subbands if asked for; a volume: one subimage per z slice.
+    using Images = std::vector<ImageBuf>;
+
+    // The synthesis, made on first use (by one thread; the others wait for it), checked
+    // against the spec open() announced. Null (with errorfmt) if it fails.
+    const std::vector<ImageBuf>* synthesized()
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        if (m_images)
+            return m_images.get();
+        std::string error;
+        std::shared_ptr<const Images> images = cached_synthesis(m_name, m_recipe, error);
+        if (images) {
+            for (size_t i = 0; i < m_announced.size() && error.empty(); ++i) {
+                const ImageSpec& want = m_announced[i];
+                if (i >= images->size() || (*images)[i].spec().width != want.width
+                    || (*images)[i].spec().height != want.height
+                    || (*images)[i].spec().channelnames != want.channelnames)
+                    error = "internal error: the synthesis differs from the spec announced";
+            }
+        }
+        if (!error.empty()) {
+            errorfmt("{}", texsyn::readable_message(error));
+            return nullptr;
+        }
+        m_images = images;
+        return m_images.get();
+    }
+
     // OIIO tools open a file more than once (oiiotool: for its spec, then for its pixels),
     // and a synthesis is expensive, so the last two results are kept, keyed by the name as
     // given, the working directory (for relative paths) and the modification times and
     // sizes of the recipe file, the samples, the files its options read and the colour
     // config (so edits are seen).
-    // 0: the synthesis, then its subbands if asked for; a volume: one subimage per z slice.
-    using Images = std::vector<ImageBuf>;
-
     static std::shared_ptr<const Images> cached_synthesis(
         const std::string& name, const texsyn::Recipe& recipe, std::string& error)
     {
@@ -190,7 +249,11 @@ private:
         return images;
     }
 
-    std::shared_ptr<const Images> m_images; // made or found by open()
+    std::string m_name;                     // as given to open()
+    texsyn::Recipe m_recipe;                // what open() read
+    std::vector<ImageSpec> m_announced;     // the subimages' specs open() knows
+    std::mutex m_mutex;                     // guards m_images
+    std::shared_ptr<const Images> m_images; // made on first use
     int m_subimage = 0;
 };
 

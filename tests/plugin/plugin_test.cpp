@@ -2,6 +2,7 @@
 // The OIIO format plugin, driven through the STOCK Debian tools (oiiotool, iinfo, maketx,
 // idiff) and Python, with OIIO_LIBRARY_PATH pointing at the built plugin.
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -304,7 +305,9 @@ TEST_F(Plugin, MemoryLimitsHoldInsideTheHostTools)
             r.out.find("bomb.png: its 100000x100000 pixels would need about"), std::string::npos)
             << r.out;
     }
-    ToolRun r = sh("TEXSYN_MAX_MEMORY=200M iinfo 's.png.texsyn?size=4096x4096'");
+    // open() answers without synthesizing: the refusal comes with the first pixels.
+    ToolRun r = sh("TEXSYN_MAX_MEMORY=200M iinfo 's.png.texsyn?size=4096x4096' && "
+                   "TEXSYN_MAX_MEMORY=200M oiiotool 's.png.texsyn?size=4096x4096' -o x.exr");
     EXPECT_EQ(r.status, 1) << r.out;
     EXPECT_NE(r.out.find("size=4096x4096 would need about"), std::string::npos) << r.out;
     EXPECT_FALSE(fs::exists(dir / "x.exr"));
@@ -505,4 +508,31 @@ TEST_F(Plugin, RecipesArePortableAndFollowOcio)
     r = sh("cd elsewhere/deep/shot && iinfo own.texsyn");
     EXPECT_EQ(r.status, 1) << r.out;
     EXPECT_NE(r.out.find("acescg.ocio"), std::string::npos) << r.out;
+}
+
+// open() answers from the recipe and its samples' headers; the synthesis runs on the first
+// read of pixels. iinfo on a 4096x4096 recipe (a synthesis of a minute) returns at once,
+// with the spec the pixels then have, wrapmodes included, which oiiotool carries on.
+// (Stock maketx 2.4 writes "black,black" unless given --wrap: it ignores its input's.)
+TEST_F(Plugin, OpeningARecipeDoesNotSynthesizeIt)
+{
+    for (const std::string method : { "pyramid", "choosy", "patch", "neighborhood" }) {
+        const auto start = std::chrono::steady_clock::now();
+        ToolRun r = sh("timeout 20 iinfo -v 's.png.texsyn?size=4096x4096&method=" + method + "'");
+        const double seconds
+            = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        ASSERT_EQ(r.status, 0) << r.out;
+        EXPECT_LT(seconds, 2.0) << method;
+        EXPECT_NE(r.out.find("4096 x 4096, 3 channel, float texsyn"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("wrapmodes: \"periodic,periodic\""), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("synth:method: \"" + method + "\""), std::string::npos) << r.out;
+    }
+    write("r.texsyn", R"({ "sample": "s.png", "size": "64x64", "iterations": 1 })");
+    ToolRun r = sh("oiiotool r.texsyn -o s.tif && iinfo -v s.tif");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("wrapmodes: \"periodic,periodic\""), std::string::npos) << r.out;
+    // A transfer keeps its image's layout, which need not tile: no wrapmodes.
+    r = sh("iinfo -v 's.png.texsyn?method=transfer&sample=s.png,s.png'");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(r.out.find("wrapmodes"), std::string::npos) << r.out;
 }

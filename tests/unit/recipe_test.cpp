@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <texsyn/pyramid_synthesis.h>
 #include <texsyn/recipe.h>
+#include <texsyn/stats.h>
+
+#include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
 #include <chrono>
@@ -566,4 +569,103 @@ TEST(Recipe, OptionFilesAreRelativeToTheRecipe)
     const std::string json = recipe_to_json(r, "/shows/a/recipes");
     EXPECT_NE(json.find("\"dilation\": \"../maps/ctrl.exr\""), std::string::npos) << json;
     EXPECT_EQ(json.find("\"rotation\""), std::string::npos) << json; // none given
+}
+
+// recipe_spec() announces what run_recipe() makes, without running it: size, depth,
+// channels and metadata (synth:options as given), for every method that makes images,
+// grey, RGB and RGBA samples, an analysis as a sample, and the default sizes.
+TEST(Recipe, SpecIsWhatTheRunMakes)
+{
+    const fs::path dir = fs::temp_directory_path() / "texsyn_recipe_spec";
+    fs::create_directories(dir);
+    const std::string stucco = std::string(TEXSYN_TEST_DATA) + "/stucco_yellow.png";
+    OIIO::ImageBuf rgb(stucco);
+    OIIO::ImageBuf small = OIIO::ImageBufAlgo::resize(rgb, "", 0, OIIO::ROI(0, 61, 0, 45));
+    const std::string rgb_file = (dir / "rgb.png").string();
+    const std::string grey_file = (dir / "grey.png").string();
+    const std::string rgba_file = (dir / "rgba.exr").string();
+    ASSERT_TRUE(small.write(rgb_file));
+    ASSERT_TRUE(OIIO::ImageBufAlgo::channels(small, 1, {}).write(grey_file));
+    const int rgba_order[] = { 0, 1, 2, -1 };
+    const float alpha[] = { 0, 0, 0, 0.5f };
+    ASSERT_TRUE(OIIO::ImageBufAlgo::channels(small, 4, rgba_order, alpha).write(rgba_file));
+    const std::string tsa = (dir / "rgb.tsa").string();
+    {
+        TextureStatistics stats;
+        OIIO::ImageBuf linear(rgb_file);
+        PyramidOptions opt;
+        std::string error;
+        ASSERT_TRUE(analyze_texture(linear, opt, stats, error)) << error;
+        if (stats.colorspace.empty())
+            stats.colorspace = "Linear Rec.709 (sRGB)";
+        ASSERT_TRUE(write_statistics(tsa, stats, error)) << error;
+    }
+    struct Case {
+        std::string method;
+        std::vector<std::string> samples;
+        std::string options;
+    };
+    const std::vector<Case> cases = {
+        { "pyramid", { rgb_file }, "iterations=1" },
+        { "pyramid", { rgba_file }, "iterations=1:size=40x24" },
+        { "pyramid", { tsa }, "iterations=1" },
+        { "solid", { grey_file }, "iterations=1" },
+        { "mix", { rgba_file, rgba_file }, "weights=1,1:iterations=1" },
+        { "mix", { rgb_file, rgb_file }, "palette=1:pattern=0:iterations=1:size=32x32" },
+        { "transfer", { grey_file, grey_file }, "iterations=1" },
+        { "neighborhood", { rgba_file }, "levels=2:size=24x20" },
+        { "neighborhood", { rgb_file }, "levels=2:tile=0" },
+        { "choosy", { rgb_file }, "levels=2" },
+        { "patch", { grey_file }, "size=32x32" },
+        { "cascade", {}, "size=32x16" },
+        { "cascade", { rgb_file }, "ramp=0,0,0,1,1,1" },
+        { "cascade", { rgba_file }, "transfer=channels" },
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.method + " " + c.options + " " + (c.samples.empty() ? "" : c.samples[0]));
+        Recipe r = with_sample(c.samples.empty() ? "" : c.samples[0], c.method);
+        r.samples = c.samples;
+        r.seed = 3;
+        std::string error;
+        ASSERT_TRUE(r.options.apply(c.options, error)) << error;
+        OIIO::ImageSpec announced;
+        ASSERT_TRUE(recipe_spec(r, announced, error)) << error;
+        OIIO::ImageBuf made;
+        ASSERT_TRUE(run_recipe(r, made, nullptr, error)) << error;
+        const OIIO::ImageSpec& got = made.spec();
+        EXPECT_EQ(announced.width, got.width);
+        EXPECT_EQ(announced.height, got.height);
+        EXPECT_EQ(announced.depth, got.depth);
+        EXPECT_EQ(announced.channelnames, got.channelnames);
+        EXPECT_EQ(announced.alpha_channel, got.alpha_channel);
+        EXPECT_EQ(announced.format, OIIO::TypeFloat);
+        for (const OIIO::ParamValue& p : announced.extra_attribs)
+            if (p.name() != "synth:options")
+                EXPECT_EQ(
+                    announced.get_string_attribute(p.name()), got.get_string_attribute(p.name()))
+                    << p.name();
+        for (const OIIO::ParamValue& p : got.extra_attribs)
+            EXPECT_TRUE(announced.find_attribute(p.name()))
+                << p.name() << " = " << got.get_string_attribute(p.name());
+    }
+    fs::remove_all(dir);
+}
+
+// recipe_spec() refuses what a run would refuse from the recipe and the headers alone.
+TEST(Recipe, SpecRefusesWhatTheRunWould)
+{
+    const std::string stucco = std::string(TEXSYN_TEST_DATA) + "/stucco_yellow.png";
+    Recipe r = with_sample(stucco, "choosy");
+    std::string error;
+    OIIO::ImageSpec spec;
+    ASSERT_TRUE(r.options.apply("size=62x62:levels=3", error)) << error;
+    EXPECT_FALSE(recipe_spec(r, spec, error));
+    EXPECT_NE(error.find("each side must be a multiple of 4"), std::string::npos) << error;
+    r = with_sample("/no/such.png");
+    EXPECT_FALSE(recipe_spec(r, spec, error));
+    EXPECT_NE(error.find("/no/such.png: no such file"), std::string::npos) << error;
+    r = with_sample(stucco, "cascade");
+    ASSERT_TRUE(r.options.apply("palette=/no/palette.png", error)) << error;
+    EXPECT_FALSE(recipe_spec(r, spec, error));
+    EXPECT_NE(error.find("palette=/no/palette.png : no such file"), std::string::npos) << error;
 }

@@ -33,6 +33,10 @@ struct Sample {
     std::shared_ptr<const TextureStatistics> analysis; ///< set for an analysis file
 };
 
+/// How many float copies of an image sample read_sample() holds at once (the memory check
+/// of read_image() counts them).
+constexpr int sample_read_copies = 4;
+
 /// Reads `filename`: an analysis file (*.tsa, read_statistics) or an image (read_image),
 /// converted from `colorspace` ("" = ColorConfig::guess_colorspace of the file) to the
 /// config's scene_linear. Fails (false, `error` naming the file and what is wrong) on a

@@ -22,6 +22,13 @@ namespace texsyn {
 bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error,
     OIIO::ImageSpec* native = nullptr, int copies = 1);
 
+/// The header of `filename` (its first subimage's spec, the file's pixel type) with the
+/// checks read_image() makes before decoding: a regular file, an image OIIO opens, a TIFF
+/// whose data fits the file, `copies` float copies of its pixels within the memory limit.
+/// Decodes no pixel. False with read_image()'s messages otherwise.
+bool read_image_spec(
+    const std::string& filename, OIIO::ImageSpec& spec, std::string& error, int copies = 1);
+
 /// False (with "FILE: no such file", "FILE: is a directory, not WHAT" or "FILE: is not a
 /// regular file (a FIFO, device or socket), not WHAT") unless `filename` is a regular file
 /// (after links). Checked before any library opens a file: reading a FIFO or /dev/zero

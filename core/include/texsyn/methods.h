@@ -180,6 +180,27 @@ struct MethodResult {
     std::string notes;
 };
 
+/// An input's layout, known from its file's header without decoding pixels (an analysis:
+/// its sample's).
+struct InputLayout {
+    int width = 0, height = 0;
+    std::vector<std::string> channelnames;
+};
+
+/// What a run's image or volume will be, known before the run: what the OIIO plugin answers
+/// open() with, and what run_method() checks every result against.
+struct ResultLayout {
+    int width = 0, height = 0;
+    int depth = 1; ///< a volume's slices
+    std::vector<std::string> channelnames;
+    bool tiles = true; ///< it wraps around seamlessly: written with wrapmodes "periodic"
+};
+
+/// A row's layout rule: from the validated options and the inputs' layouts (checked for
+/// count), the result's; false with a message if the options cannot apply to the inputs.
+using MethodLayout = std::function<bool(const MethodOptions& options,
+    const std::vector<InputLayout>& inputs, ResultLayout& result, std::string& error)>;
+
 /// The images an input-file option names (read by read_option_files, inputs.h), by
 /// option name.
 using OptionImages = std::map<std::string, OIIO::ImageBuf>;
@@ -210,6 +231,10 @@ struct Method {
     std::function<int(const MethodOptions&)> colours_from = {};
     /// Rewrites the tool's shorthand forms of its modifiers into options (may be empty).
     std::function<std::string(const std::string&)> shorthands = {};
+    /// Its result's layout (rows that make images or volumes); empty = the usual rule:
+    /// size= if given, else the size of the input the colours come from (colours_from),
+    /// with that input's channels, and tiling.
+    MethodLayout layout = {};
 
     /// How many items it takes when `available` are on the stack.
     int input_count(const MethodOptions& options, int available) const;
@@ -231,12 +256,22 @@ const Method* find_method(std::string_view name);
 /// "a|b|c": the names of the rows that make recipes (all rows with `all`).
 std::string method_names(bool all = false);
 
+/// The layout of `method`'s result (a row that makes images or volumes) for `options` and
+/// inputs with these layouts: the row's rule, or the usual one. Fails (false, `error`) if
+/// the options do not validate, the input count is wrong, or the rule refuses.
+bool result_layout(const Method& method, const MethodOptions& options,
+    const std::vector<InputLayout>& inputs, ResultLayout& layout, std::string& error);
+
+/// The layout of an input image or analysis (InputLayout).
+InputLayout input_layout(const MethodInput& input);
+
 /// Runs `method` with `options` on `inputs`: checks the options (validate()), the inputs'
 /// count and kinds (naming each by MethodInput::name), that every input-file option that
 /// names a file has its image in `files`, then calls the row's run function with any
 /// exception turned into a message. The result names its inputs (their file names without
-/// folders): synth:sample (a transfer's image: synth:image), or an analysis's `source`.
-/// False with a message otherwise.
+/// folders): synth:sample (a transfer's image: synth:image), or an analysis's `source`; an
+/// image or volume is checked against result_layout() (a mismatch is an internal error)
+/// and carries wrapmodes "periodic,periodic" if it tiles. False with a message otherwise.
 bool run_method(const Method& method, const MethodOptions& options,
     const std::vector<MethodInput>& inputs, const OptionImages& files, const RunSettings& settings,
     MethodResult& result, std::string& error);

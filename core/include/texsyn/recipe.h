@@ -101,4 +101,12 @@ std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir);
 bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImage>* subbands,
     std::string& error);
 
+/// What run_recipe() will give, without running it: the spec of its result (size, depth,
+/// channels, float, and the synth:* metadata, synth:options as the recipe gives them,
+/// oiio:ColorSpace and wrapmodes "periodic,periodic" for a result that tiles), from the
+/// samples' headers and analyses (no pixel decoded). Fails (false, `error`) where
+/// run_recipe() would fail before synthesizing: a bad recipe, config or colour space, a
+/// missing or unreadable sample or input file, a sample beyond the memory limit.
+bool recipe_spec(const Recipe& recipe, OIIO::ImageSpec& spec, std::string& error);
+
 } // namespace texsyn

@@ -108,8 +108,8 @@ void imagebuf_from_volume(const PlanarVolume& v, OIIO::ImageBuf& dst);
 
 /// The inverse: a float volume from a 2-D or 3-D ImageBuf (any pixel type), colour
 /// un-associated from alpha (divided by it unless flagged "oiio:UnassociatedAlpha"),
-/// synth:* metadata into `v.attributes`. Fails (false, `error`) if `src` has an error, is
-/// empty, too large (height * depth >= 2^31) or has NaN/Inf voxels.
+/// synth:* metadata and wrapmodes into `v.attributes`. Fails (false, `error`) if `src` has an
+/// error, is empty, too large (height * depth >= 2^31) or has NaN/Inf voxels.
 bool volume_from_imagebuf(const OIIO::ImageBuf& src, PlanarVolume& dst, std::string& error);
 
 /// Z slice `z` of a 3-D ImageBuf as a 2-D float image of the same width, height,

@@ -6,6 +6,7 @@
 
 #include "cascade_pvt.h"
 #include "methods/method_helpers_pvt.h"
+#include "methods/result_layout_pvt.h"
 
 namespace texsyn::detail {
 
@@ -73,6 +74,25 @@ bool run_cascade(const MethodOptions& options, const std::vector<MethodInput>& i
     return false;
 }
 
+// size=, else the input image's size, else 512x512; RGB when coloured by a ramp or palette,
+// else one lattice Y, or the image's channels with transfer=channels. A generator tiles; a
+// transfer from an image only if the image does, which is not known.
+bool cascade_layout(const MethodOptions& options, const std::vector<InputLayout>& inputs,
+    ResultLayout& layout, std::string&)
+{
+    const CascadeWithFiles& given = options_of<CascadeWithFiles>(options);
+    layout.width = layout.height = 512;
+    if (!inputs.empty())
+        layout = layout_from_input(inputs[0], options);
+    apply_size_option(options, layout);
+    if (!given.options.ramp.empty() || !given.palette.empty())
+        layout.channelnames = { "R", "G", "B" };
+    else if (inputs.empty() || given.options.transfer != CascadeTransfer::Channels)
+        layout.channelnames = { "Y" };
+    layout.tiles = inputs.empty();
+    return true;
+}
+
 } // namespace
 
 const Method& cascade_method()
@@ -86,7 +106,7 @@ const Method& cascade_method()
         "noise; else it replaces the current image by a texture transfer from it, at its size "
         "unless size= is given. The result is scene-linear (one channel Y, or RGB with ramp= "
         "or palette=).",
-        false, {}, {}, cascade_shorthands };
+        false, {}, {}, cascade_shorthands, cascade_layout };
     return m;
 }
 

@@ -2,9 +2,30 @@
 // The registry row of choosy sampling.
 #include <texsyn/choosy.h>
 
+#include <algorithm>
+
+#include "choosy_pvt.h"
+#include "methods/result_layout_pvt.h"
 #include "methods/source_map_pvt.h"
 
 namespace texsyn::detail {
+
+namespace {
+
+// Without size=, the sample's size cropped to a multiple of 2^(levels-1).
+bool choosy_layout(const ChoosyOptions& opt, const InputLayout& sample,
+    const MethodOptions& options, ResultLayout& layout, std::string& error)
+{
+    layout = layout_from_input(sample, options);
+    const int unit = 1 << (opt.levels - 1);
+    if (!opt.width)
+        layout.width = std::max(sample.width / unit * unit, 1);
+    if (!opt.height)
+        layout.height = std::max(sample.height / unit * unit, 1);
+    return check_choosy_sizes(sample.width, sample.height, layout.width, layout.height, opt, error);
+}
+
+} // namespace
 
 const Method& choosy_method()
 {
@@ -15,7 +36,7 @@ const Method& choosy_method()
         "Laplacian inversion, each sample pixel's score penalised by its use count (keeps the "
         "sample's histogram), isotropic by default, toroidal. Each side of size must be a "
         "multiple of 2^(levels-1).",
-        choosy_synthesize);
+        choosy_synthesize, choosy_layout);
     return m;
 }
 

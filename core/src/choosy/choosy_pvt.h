@@ -146,6 +146,11 @@ void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& s
 /// that few visits of a round are neighbours.
 size_t choosy_round_size(size_t sites);
 
+/// Whether a `sw` x `sh` sample (as given, before its crop) and a `w` x `h` output suit
+/// opt.levels: the coarsest level of each at least the 5x5 neighbourhood, each output side
+/// a multiple of 2^(levels-1). False with a message naming the option otherwise.
+bool check_choosy_sizes(int sw, int sh, int w, int h, const ChoosyOptions& opt, std::string& error);
+
 } // namespace texsyn::detail
 
 namespace texsyn::detail {

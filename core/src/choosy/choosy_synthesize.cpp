@@ -33,38 +33,6 @@ int levels_allowed(int w, int h, int wanted)
     return l;
 }
 
-// The sample's size `sw` x `sh` as given (its crop to a multiple of 2^(levels-1) has the
-// same coarsest level).
-bool check_sizes(int sw, int sh, int w, int h, const ChoosyOptions& opt, std::string& error)
-{
-    const int unit = 1 << (opt.levels - 1);
-    const int allowed = levels_allowed(sw, sh, opt.levels);
-    if (allowed == 0) {
-        error = "the sample (" + size_text(sw, sh) + ") is smaller than the 5x5 neighbourhood";
-        return false;
-    }
-    if (allowed < opt.levels) {
-        error = "levels=" + std::to_string(opt.levels) + " is too many for the sample ("
-            + size_text(sw, sh) + "): its coarsest level would be smaller than the 5x5 "
-            + "neighbourhood (use levels=" + std::to_string(allowed) + " or less)";
-        return false;
-    }
-    if (w % unit != 0 || h % unit != 0) {
-        auto nearest = [unit](int v) { return std::max(unit, (v + unit / 2) / unit * unit); };
-        error = "size=" + size_text(w, h) + ": each side must be a multiple of "
-            + std::to_string(unit) + " (2^(levels-1)) for levels=" + std::to_string(opt.levels)
-            + "; the nearest is " + size_text(nearest(w), nearest(h));
-        return false;
-    }
-    if (w / unit < kMinLevelSide || h / unit < kMinLevelSide) {
-        error = "size=" + size_text(w, h) + " is too small for levels=" + std::to_string(opt.levels)
-            + ": the coarsest output level would be " + size_text(w / unit, h / unit)
-            + ", smaller than the 5x5 neighbourhood";
-        return false;
-    }
-    return true;
-}
-
 // The top-left part of every plane whose sides are multiples of `unit`.
 std::vector<Plane> crop_to_multiple(const std::vector<Plane>& planes, int unit)
 {
@@ -124,7 +92,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyO
     const int sw = in.width(), sh = in.height();
     const int cw = std::max(sw / unit * unit, 1), chh = std::max(sh / unit * unit, 1);
     const int w = opt.width ? opt.width : cw, h = opt.height ? opt.height : chh;
-    if (!check_sizes(sw, sh, w, h, opt, error)
+    if (!detail::check_choosy_sizes(sw, sh, w, h, opt, error)
         || !detail::check_memory(choosy_memory_estimate(cw, chh, in.nchannels(), w, h, opt),
             "size=" + size_text(w, h), error)) {
         dst.errorfmt("{}", error);
@@ -193,5 +161,41 @@ OIIO::ImageBuf choosy_synthesize(
     return detail::value_form("choosy_synthesize",
         [&](OIIO::ImageBuf& dst) { return choosy_synthesize(dst, sample, opt, source_map); });
 }
+
+namespace detail {
+
+// The sample's size `sw` x `sh` as given (its crop to a multiple of 2^(levels-1) has the
+// same coarsest level).
+bool check_choosy_sizes(int sw, int sh, int w, int h, const ChoosyOptions& opt, std::string& error)
+{
+    const int unit = 1 << (opt.levels - 1);
+    const int allowed = levels_allowed(sw, sh, opt.levels);
+    if (allowed == 0) {
+        error = "the sample (" + size_text(sw, sh) + ") is smaller than the 5x5 neighbourhood";
+        return false;
+    }
+    if (allowed < opt.levels) {
+        error = "levels=" + std::to_string(opt.levels) + " is too many for the sample ("
+            + size_text(sw, sh) + "): its coarsest level would be smaller than the 5x5 "
+            + "neighbourhood (use levels=" + std::to_string(allowed) + " or less)";
+        return false;
+    }
+    if (w % unit != 0 || h % unit != 0) {
+        auto nearest = [unit](int v) { return std::max(unit, (v + unit / 2) / unit * unit); };
+        error = "size=" + size_text(w, h) + ": each side must be a multiple of "
+            + std::to_string(unit) + " (2^(levels-1)) for levels=" + std::to_string(opt.levels)
+            + "; the nearest is " + size_text(nearest(w), nearest(h));
+        return false;
+    }
+    if (w / unit < kMinLevelSide || h / unit < kMinLevelSide) {
+        error = "size=" + size_text(w, h) + " is too small for levels=" + std::to_string(opt.levels)
+            + ": the coarsest output level would be " + size_text(w / unit, h / unit)
+            + ", smaller than the 5x5 neighbourhood";
+        return false;
+    }
+    return true;
+}
+
+} // namespace detail
 
 } // namespace texsyn

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <system_error>
 
 #include <OpenImageIO/filesystem.h>
@@ -39,6 +40,13 @@ bool check_regular_file(const std::string& filename, const std::string& what, st
 
 namespace {
 
+// "FILE: cannot read image (reason)", on one line: OIIO messages can span lines and the
+// tool prints one line per error.
+std::string cannot_read(const std::string& filename, const std::string& reason)
+{
+    return one_line(filename + ": cannot read image" + (reason.empty() ? "" : " (" + reason + ")"));
+}
+
 /// Reads every pixel of `in`'s current subimage as float into `pixels` (the whole image,
 /// channel-interleaved), in bands of rows, and stops at the first band that fails or that
 /// leaves an error behind: some readers (libjpeg on a truncated file) report success and
@@ -68,11 +76,15 @@ bool read_all_pixels(OIIO::ImageInput& in, float* pixels)
 
 } // namespace
 
-bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error,
-    OIIO::ImageSpec* native, int copies)
+namespace {
+
+// The file opened for reading (see read_image), its header checked: the TIFF extent, and
+// `copies` float copies of its pixels against the memory limit. Null with `error`.
+std::unique_ptr<OIIO::ImageInput> open_checked(
+    const std::string& filename, int copies, std::string& error)
 {
     if (!check_regular_file(filename, "an image", error))
-        return false;
+        return nullptr;
     // Read with an ImageInput of our own, not through OIIO's shared ImageCache: texsyn runs
     // inside OIIO tools (as their format plugin), whose cache must not be re-entered while
     // it is opening the recipe. Ask for un-associated colour where the file stores it that
@@ -80,32 +92,57 @@ bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& e
     // under low alpha.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    auto fail = [&](std::string msg) {
-        if (msg.empty())
-            msg = OIIO::geterror();
-        // OIIO messages can span lines; the tool prints one line per error.
-        error = one_line(filename + ": cannot read image" + (msg.empty() ? "" : " (" + msg + ")"));
-        return false;
-    };
     auto in = OIIO::ImageInput::open(filename, &config);
-    if (!in)
-        return fail(OIIO::geterror());
+    if (!in) {
+        error = cannot_read(filename, OIIO::geterror());
+        return nullptr;
+    }
     if (std::string reason;
-        std::string(in->format_name()) == "tiff" && !tiff_data_fits_in_file(filename, reason))
-        return fail(reason);
-    OIIO::ImageSpec spec = in->spec();
-    spec.format = OIIO::TypeFloat;
-    spec.channelformats.clear();
+        std::string(in->format_name()) == "tiff" && !tiff_data_fits_in_file(filename, reason)) {
+        error = cannot_read(filename, reason);
+        return nullptr;
+    }
     // Refuse from the header, before any pixel is allocated or decoded: a few bytes of
     // PNG can claim 100000x100000 pixels.
+    const OIIO::ImageSpec& spec = in->spec();
     std::string refusal;
-    if (!check_memory(size_t(std::min(1e18, double(spec.image_bytes()) * std::max(copies, 1))),
+    if (!check_memory(
+            size_t(std::min(
+                1e18, double(spec.image_pixels()) * spec.nchannels * 4.0 * std::max(copies, 1))),
             "its " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
                 + (spec.depth > 1 ? "x" + std::to_string(spec.depth) : "") + " pixels",
             refusal)) {
         error = filename + ": " + refusal;
-        return false;
+        return nullptr;
     }
+    return in;
+}
+
+} // namespace
+
+bool read_image_spec(
+    const std::string& filename, OIIO::ImageSpec& spec, std::string& error, int copies)
+{
+    auto in = open_checked(filename, copies, error);
+    if (!in)
+        return false;
+    spec = in->spec();
+    return true;
+}
+
+bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& error,
+    OIIO::ImageSpec* native, int copies)
+{
+    auto fail = [&](std::string msg) {
+        error = cannot_read(filename, msg.empty() ? OIIO::geterror() : msg);
+        return false;
+    };
+    auto in = open_checked(filename, copies, error);
+    if (!in)
+        return false;
+    OIIO::ImageSpec spec = in->spec();
+    spec.format = OIIO::TypeFloat;
+    spec.channelformats.clear();
     OIIO::ImageBuf buf(spec);
     if (!buf.localpixels()) // OIIO logs a failed allocation and leaves no pixels
         return fail("not enough memory for its " + std::to_string(spec.width) + "x"

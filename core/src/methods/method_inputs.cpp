@@ -38,7 +38,7 @@ bool read_sample(const std::string& filename, const ColorConfig& colors,
     // Held at once: the file's pixels, their scene-linear copy, and the colour
     // conversion's two working copies.
     OIIO::ImageSpec native;
-    if (!read_image(filename, s.file_pixels, error, &native, 4))
+    if (!read_image(filename, s.file_pixels, error, &native, sample_read_copies))
         return false;
     s.file_format = native.format;
     if (!relinearize_sample(s, colors,

@@ -6,6 +6,8 @@
 
 #include <OpenImageIO/filesystem.h>
 
+#include "result_layout_pvt.h"
+
 namespace texsyn {
 
 namespace detail {
@@ -138,7 +140,7 @@ bool run_method(const Method& method, const MethodOptions& options,
         if (!method.run(options, inputs, files, settings, result, error))
             return false;
         name_inputs(method, inputs, result);
-        return true;
+        return detail::check_result_layout(method, options, inputs, result, error);
     } catch (const std::bad_alloc&) {
         error = method.name + ": out of memory";
     } catch (const std::exception& e) {

@@ -66,12 +66,15 @@ bool run_copying_method(const MethodOptions& options, const std::vector<MethodIn
 }
 
 /// The registry row of a method that copies sample pixels: one image in, its synthesis by
-/// `synthesize` out, options WithSourceMap<Options>.
+/// `synthesize` out, options WithSourceMap<Options>, its result's layout by `layout`
+/// (a MethodLayout for the method's own options and the one sample).
 template <class Options>
 Method copying_method(const char* name, const char* doc, const char* summary, const char* help,
-    bool (*synthesize)(OIIO::ImageBuf&, const OIIO::ImageBuf&, const Options&, OIIO::ImageBuf*))
+    bool (*synthesize)(OIIO::ImageBuf&, const OIIO::ImageBuf&, const Options&, OIIO::ImageBuf*),
+    bool (*layout)(
+        const Options&, const InputLayout&, const MethodOptions&, ResultLayout&, std::string&))
 {
-    return { name, MethodInputs::Image, MethodOutput::Image,
+    Method m { name, MethodInputs::Image, MethodOutput::Image,
         [] { return MethodOptions(WithSourceMap<Options>()); },
         [synthesize](const MethodOptions& options, const std::vector<MethodInput>& inputs,
             const OptionImages&, const RunSettings& settings, MethodResult& result,
@@ -80,6 +83,12 @@ Method copying_method(const char* name, const char* doc, const char* summary, co
                 options, inputs, settings, result, error, synthesize);
         },
         doc, summary, help };
+    m.layout = [layout](const MethodOptions& options, const std::vector<InputLayout>& inputs,
+                   ResultLayout& result, std::string& error) {
+        return layout(
+            options_of<WithSourceMap<Options>>(options).options, inputs[0], options, result, error);
+    };
+    return m;
 }
 
 } // namespace texsyn::detail

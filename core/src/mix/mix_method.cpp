@@ -4,7 +4,10 @@
 #include <texsyn/methods.h>
 #include <texsyn/mix.h>
 
+#include <algorithm>
+
 #include "methods/method_helpers_pvt.h"
+#include "methods/result_layout_pvt.h"
 
 namespace texsyn::detail {
 
@@ -24,6 +27,18 @@ bool run_mix(const MethodOptions& options, const std::vector<MethodInput>& input
     return false;
 }
 
+// The first sample's size, the palette sample's channels.
+bool mix_layout(const MethodOptions& options, const std::vector<InputLayout>& inputs,
+    ResultLayout& layout, std::string&)
+{
+    const size_t palette = size_t(options_of<MixOptions>(options).palette.value_or(0));
+    layout = layout_from_input(inputs[std::min(palette, inputs.size() - 1)], options);
+    ResultLayout first = layout_from_input(inputs[0], options);
+    layout.width = first.width;
+    layout.height = first.height;
+    return true;
+}
+
 } // namespace
 
 const Method& mix_method()
@@ -38,7 +53,8 @@ const Method& mix_method()
         "sample 1) or weights=W0,W1,... (averaged histograms; pops one image per weight, else "
         "2).",
         true, [](const MethodOptions& o) { return options_of<MixOptions>(o).nsamples(); },
-        [](const MethodOptions& o) { return options_of<MixOptions>(o).palette.value_or(0); } };
+        [](const MethodOptions& o) { return options_of<MixOptions>(o).palette.value_or(0); }, {},
+        mix_layout };
     return m;
 }
 

@@ -2,9 +2,25 @@
 // The registry row of the neighbourhood method.
 #include <texsyn/neighborhood.h>
 
+#include "methods/result_layout_pvt.h"
 #include "methods/source_map_pvt.h"
+#include "neighborhood_pvt.h"
 
 namespace texsyn::detail {
+
+namespace {
+
+// It tiles unless tile=0 (Wei & Levoy's single pass).
+bool neighborhood_layout(const NeighborhoodOptions& opt, const InputLayout& sample,
+    const MethodOptions& options, ResultLayout& layout, std::string& error)
+{
+    layout = layout_from_input(sample, options);
+    layout.tiles = opt.tile != 0;
+    return check_neighborhood_sizes(
+        sample.width, sample.height, layout.width, layout.height, opt, error);
+}
+
+} // namespace
 
 const Method& neighborhood_method()
 {
@@ -13,7 +29,7 @@ const Method& neighborhood_method()
         "coherent), toroidal, with source maps",
         "Wei & Levoy 2000 neighbourhood synthesis of the current image (scanline order, causal "
         "L-shaped neighbourhoods, Gaussian pyramid, toroidal).",
-        neighborhood_synthesize);
+        neighborhood_synthesize, neighborhood_layout);
     return m;
 }
 

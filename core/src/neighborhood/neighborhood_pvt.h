@@ -121,6 +121,12 @@ private:
     int m_reach = 0, m_coarse_reach = 0; // largest |dx|, |dy| of each part
 };
 
+/// Whether a `sw` x `sh` sample and a `w` x `h` output suit opt.levels and opt.n: every
+/// level of each at least its neighbourhood's side. False with a message naming the option
+/// otherwise.
+bool check_neighborhood_sizes(
+    int sw, int sh, int w, int h, const NeighborhoodOptions& opt, std::string& error);
+
 } // namespace texsyn::detail
 
 namespace texsyn::detail {

@@ -39,35 +39,6 @@ int levels_the_sample_allows(int w, int h, const NeighborhoodOptions& opt)
     return l;
 }
 
-bool check_sizes(int sw, int sh, int w, int h, const NeighborhoodOptions& opt, std::string& error)
-{
-    const int allowed = levels_the_sample_allows(sw, sh, opt);
-    if (allowed == 0) {
-        error = "the sample (" + size_text(sw, sh)
-            + ") is smaller than the n=" + std::to_string(opt.n_at(0)) + " neighbourhood";
-        return false;
-    }
-    if (allowed < opt.levels) {
-        error = "levels=" + std::to_string(opt.levels) + " is too many for the sample ("
-            + size_text(sw, sh) + "): level " + std::to_string(allowed) + " would be "
-            + size_text(halved(sw, allowed), halved(sh, allowed))
-            + ", smaller than its n=" + std::to_string(opt.n_at(allowed))
-            + " neighbourhood (use levels=" + std::to_string(allowed) + " or less)";
-        return false;
-    }
-    for (int l = 0; l < opt.levels; ++l) {
-        const int lw = halved(w, l), lh = halved(h, l), n = opt.n_at(l);
-        if (lw < n || lh < n) {
-            error = "size=" + size_text(w, h)
-                + " is too small for levels=" + std::to_string(opt.levels) + ": output level "
-                + std::to_string(l) + " would be " + size_text(lw, lh)
-                + ", smaller than its n=" + std::to_string(n) + " neighbourhood";
-            return false;
-        }
-    }
-    return true;
-}
-
 using detail::NeighborAccess;
 using detail::NeighborView;
 using detail::OutputLevel;
@@ -261,7 +232,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Neighbo
     std::string error;
     const int sw = in.width(), sh = in.height();
     const int w = opt.width ? opt.width : sw, h = opt.height ? opt.height : sh;
-    if (!check_sizes(sw, sh, w, h, opt, error)
+    if (!detail::check_neighborhood_sizes(sw, sh, w, h, opt, error)
         || !detail::check_memory(neighborhood_memory_estimate(sw, sh, in.nchannels(), w, h, opt),
             "size=" + size_text(w, h), error)) {
         dst.errorfmt("{}", error);
@@ -316,5 +287,39 @@ OIIO::ImageBuf neighborhood_synthesize(
     return detail::value_form("neighborhood_synthesize",
         [&](OIIO::ImageBuf& dst) { return neighborhood_synthesize(dst, sample, opt, source_map); });
 }
+
+namespace detail {
+
+bool check_neighborhood_sizes(
+    int sw, int sh, int w, int h, const NeighborhoodOptions& opt, std::string& error)
+{
+    const int allowed = levels_the_sample_allows(sw, sh, opt);
+    if (allowed == 0) {
+        error = "the sample (" + size_text(sw, sh)
+            + ") is smaller than the n=" + std::to_string(opt.n_at(0)) + " neighbourhood";
+        return false;
+    }
+    if (allowed < opt.levels) {
+        error = "levels=" + std::to_string(opt.levels) + " is too many for the sample ("
+            + size_text(sw, sh) + "): level " + std::to_string(allowed) + " would be "
+            + size_text(halved(sw, allowed), halved(sh, allowed))
+            + ", smaller than its n=" + std::to_string(opt.n_at(allowed))
+            + " neighbourhood (use levels=" + std::to_string(allowed) + " or less)";
+        return false;
+    }
+    for (int l = 0; l < opt.levels; ++l) {
+        const int lw = halved(w, l), lh = halved(h, l), n = opt.n_at(l);
+        if (lw < n || lh < n) {
+            error = "size=" + size_text(w, h)
+                + " is too small for levels=" + std::to_string(opt.levels) + ": output level "
+                + std::to_string(l) + " would be " + size_text(lw, lh)
+                + ", smaller than its n=" + std::to_string(n) + " neighbourhood";
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace detail
 
 } // namespace texsyn

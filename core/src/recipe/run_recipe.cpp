@@ -2,10 +2,16 @@
 // Runs a recipe exactly as the `texsyn` tool runs the same command line.
 #include <texsyn/recipe.h>
 
+#include <memory>
+
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/strutil.h>
 
 #include <texsyn/color.h>
 #include <texsyn/inputs.h>
+#include <texsyn/io.h>
+#include <texsyn/stats.h>
+#include <texsyn/version.h>
 #include <texsyn/volume.h>
 
 namespace texsyn {
@@ -44,12 +50,19 @@ bool convert_result(const ColorConfig& colors, const OIIO::ImageBuf& image, cons
     return ok;
 }
 
-} // namespace
+// What run_recipe() and recipe_spec() both start from (inside a DepthGuard): the nesting
+// checked, the recipe validated, its method and options, its config,
+// its output space `to` and each sample's colour space ("" = from the file).
+struct Prepared {
+    const Method* method = nullptr;
+    MethodOptions options; ///< the recipe's, or the method's defaults
+    std::unique_ptr<ColorConfig> colors;
+    std::string to;
+    std::vector<std::string> spaces;
+};
 
-bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImage>* subbands,
-    std::string& error)
+bool prepare(const Recipe& recipe, Prepared& p, std::string& error)
 {
-    DepthGuard depth;
     if (recipe_depth > max_recipe_depth) {
         error = (recipe.samples.empty() ? std::string("recipe") : recipe.samples[0])
             + ": recipes nest more than " + std::to_string(max_recipe_depth)
@@ -58,37 +71,50 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
     }
     if (!recipe.validate(error))
         return false;
-    const Method& method = *recipe.row();
-    const MethodOptions options = recipe.options ? recipe.options : method.defaults();
-    auto colors = ColorConfig::load(recipe.colorconfig, error);
-    if (!colors)
+    p.method = recipe.row();
+    p.options = recipe.options ? recipe.options : p.method->defaults();
+    p.colors = ColorConfig::load(recipe.colorconfig, error);
+    if (!p.colors)
         return false;
-    const std::string to = recipe.tocolorspace.empty() ? colors->scene_linear()
-                                                       : colors->resolve(recipe.tocolorspace);
-    std::vector<std::string> spaces = recipe.iscolorspace;
-    spaces.resize(recipe.samples.size(), spaces.size() == 1 ? spaces[0] : "");
+    p.to = recipe.tocolorspace.empty() ? p.colors->scene_linear()
+                                       : p.colors->resolve(recipe.tocolorspace);
+    p.spaces = recipe.iscolorspace;
+    p.spaces.resize(recipe.samples.size(), p.spaces.size() == 1 ? p.spaces[0] : "");
     std::vector<std::pair<const char*, std::string>> named
         = { { "tocolorspace", recipe.tocolorspace } };
-    for (const std::string& space : spaces)
+    for (const std::string& space : p.spaces)
         named.emplace_back("iscolorspace", space);
     for (const auto& [key, space] : named)
-        if (!space.empty() && colors->resolve(space).empty()) {
+        if (!space.empty() && p.colors->resolve(space).empty()) {
             error = option_error(key, space,
                 "unknown colour space (known: "
-                    + OIIO::Strutil::join(colors->colorspace_names(), ", ") + ")");
+                    + OIIO::Strutil::join(p.colors->colorspace_names(), ", ") + ")");
             return false;
         }
+    return true;
+}
 
+} // namespace
+
+bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImage>* subbands,
+    std::string& error)
+{
+    DepthGuard depth;
+    Prepared p;
+    if (!prepare(recipe, p, error))
+        return false;
+    const Method& method = *p.method;
+    const MethodOptions& options = p.options;
     std::vector<Sample> samples(recipe.samples.size());
     std::vector<MethodInput> inputs;
     for (size_t i = 0; i < samples.size(); ++i) {
-        if (!read_sample(recipe.samples[i], *colors, spaces[i], samples[i], error))
+        if (!read_sample(recipe.samples[i], *p.colors, p.spaces[i], samples[i], error))
             return false;
         inputs.push_back({ samples[i].analysis ? nullptr : &samples[i].pixels,
             samples[i].analysis.get(), recipe.samples[i] });
     }
     OptionImages files;
-    if (!read_option_files(options, *colors, files, error))
+    if (!read_option_files(options, *p.colors, files, error))
         return false;
     RunSettings settings;
     settings.seed = recipe.seed;
@@ -97,12 +123,77 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
     if (!run_method(method, options, inputs, files, settings, result, error))
         return false;
     if (!convert_result(
-            *colors, result.image, to, method.output == MethodOutput::Volume, dst, error))
+            *p.colors, result.image, p.to, method.output == MethodOutput::Volume, dst, error))
         return false;
-    dst.specmod().attribute("synth:colorspace", to);
-    dst.specmod().attribute("oiio:ColorSpace", to);
+    dst.specmod().attribute("synth:colorspace", p.to);
+    dst.specmod().attribute("oiio:ColorSpace", p.to);
     if (settings.subbands)
         *subbands = std::move(result.subbands);
+    return true;
+}
+
+bool recipe_spec(const Recipe& recipe, OIIO::ImageSpec& spec, std::string& error)
+{
+    DepthGuard depth;
+    Prepared p;
+    if (!prepare(recipe, p, error))
+        return false;
+    const Method& method = *p.method;
+    const MethodOptions& options = p.options;
+    std::vector<InputLayout> inputs;
+    std::string names;
+    for (const std::string& file : recipe.samples) {
+        InputLayout in;
+        if (is_analysis_filename(file)) {
+            TextureStatistics stats;
+            if (!read_statistics(file, stats, error))
+                return false;
+            in = { stats.sample_width, stats.sample_height, stats.channel_names };
+        } else {
+            OIIO::ImageSpec header;
+            if (!read_image_spec(file, header, error, sample_read_copies))
+                return false;
+            in = { header.width, header.height, header.channelnames };
+        }
+        inputs.push_back(in);
+    }
+    for (const OptionField& f : options.table().fields())
+        if (const std::string file = options.value(f.name); f.type == OptionType::InputFile
+            && !file.empty() && !check_regular_file(file, "an image", error)) {
+            error = option_error(f.name, file, error.substr(file.size() + 2));
+            return false;
+        }
+    ResultLayout layout;
+    if (!result_layout(method, options, inputs, layout, error))
+        return false;
+    spec = OIIO::ImageSpec(
+        layout.width, layout.height, int(layout.channelnames.size()), OIIO::TypeFloat);
+    spec.depth = spec.full_depth = layout.depth;
+    if (layout.depth > 1) // a volume stays un-associated, as its files keep it
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+    spec.channelnames = layout.channelnames;
+    spec.alpha_channel = -1;
+    for (size_t c = 0; c < layout.channelnames.size(); ++c)
+        if (OIIO::Strutil::iequals(layout.channelnames[c], "A")
+            || OIIO::Strutil::iequals(layout.channelnames[c], "Alpha"))
+            spec.alpha_channel = int(c);
+    spec.attribute("synth:version", version());
+    spec.attribute("synth:method", method.name);
+    spec.attribute("synth:seed", int(recipe.seed));
+    spec.attribute("synth:options", options.format());
+    for (size_t i = 0; i < recipe.samples.size(); ++i) {
+        const std::string name = OIIO::Filesystem::filename(recipe.samples[i]);
+        if (method.inputs == MethodInputs::ImageAndSample && i == 0)
+            spec.attribute("synth:image", name);
+        else
+            names += (names.empty() ? "" : ",") + name;
+    }
+    if (!names.empty())
+        spec.attribute("synth:sample", names);
+    if (layout.tiles)
+        spec.attribute("wrapmodes", "periodic,periodic");
+    spec.attribute("synth:colorspace", p.to);
+    spec.attribute("oiio:ColorSpace", p.to);
     return true;
 }
 

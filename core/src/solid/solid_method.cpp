@@ -3,7 +3,10 @@
 #include <texsyn/methods.h>
 #include <texsyn/solid.h>
 
+#include <algorithm>
+
 #include "methods/method_helpers_pvt.h"
+#include "methods/result_layout_pvt.h"
 
 namespace texsyn::detail {
 
@@ -20,6 +23,16 @@ bool run_solid(const MethodOptions& options, const std::vector<MethodInput>& inp
     return false;
 }
 
+// size=WxHxD; without it the sample's width and height, and the smaller of them as depth.
+bool solid_layout(const MethodOptions& options, const std::vector<InputLayout>& inputs,
+    ResultLayout& layout, std::string&)
+{
+    layout = layout_from_input(inputs[0], options);
+    if (!options_of<SolidOptions>(options).depth)
+        layout.depth = std::min(inputs[0].width, inputs[0].height);
+    return true;
+}
+
 } // namespace
 
 const Method& solid_method()
@@ -30,7 +43,8 @@ const Method& solid_method()
         "seamless",
         "Heeger & Bergen 1995 section 4 solid texture of the current image: a 3-D block whose "
         "slices look like it. Write it with -o FILE.vdb (OpenVDB: grids Cd and density) or -o "
-        "FILE.exr (one part per z slice)." };
+        "FILE.exr (one part per z slice).",
+        false, {}, {}, {}, solid_layout };
     return m;
 }
 

@@ -3,6 +3,7 @@
 #include <texsyn/methods.h>
 #include <texsyn/transfer.h>
 
+#include "methods/result_layout_pvt.h"
 #include "pyramid_synthesis/pyramid_synthesis_pvt.h"
 
 namespace texsyn::detail {
@@ -40,11 +41,23 @@ bool run_transfer(const MethodOptions& options, const std::vector<MethodInput>& 
     return ok;
 }
 
+// The image's size, the sample's channels; it tiles only if the image does, which is not
+// known, so it is not marked.
+bool transfer_layout(const MethodOptions& options, const std::vector<InputLayout>& inputs,
+    ResultLayout& layout, std::string&)
+{
+    layout = layout_from_input(inputs[1], options);
+    layout.width = inputs[0].width;
+    layout.height = inputs[0].height;
+    layout.tiles = false;
+    return true;
+}
+
 } // namespace
 
 const Method& transfer_method()
 {
-    static const Method m { "transfer", MethodInputs::ImageAndSample, MethodOutput::Image,
+    static Method m { "transfer", MethodInputs::ImageAndSample, MethodOutput::Image,
         [] { return MethodOptions(PyramidOptions(), transfer_table()); }, run_transfer,
         "mixtures.md",
         "Heeger & Bergen 1995 section 5: match-texture applied to an image instead of noise "
@@ -52,6 +65,7 @@ const Method& transfer_method()
         "Texture transfer: pops a sample or analysis (top) and an image (below it) and gives "
         "the image's layout the sample's statistics, at the image's size.",
         true };
+    m.layout = transfer_layout;
     return m;
 }
 

@@ -83,7 +83,7 @@ bool volume_from_imagebuf(const OIIO::ImageBuf& src, PlanarVolume& dst, std::str
         }
     }
     for (const OIIO::ParamValue& p : spec.extra_attribs)
-        if (OIIO::Strutil::starts_with(p.name(), "synth:"))
+        if (OIIO::Strutil::starts_with(p.name(), "synth:") || p.name() == "wrapmodes")
             v.attributes.add_or_replace(p);
     dst = std::move(v);
     return true;
