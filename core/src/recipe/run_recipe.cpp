@@ -50,10 +50,11 @@ bool convert_result(const ColorConfig& colors, const OIIO::ImageBuf& image, cons
     return ok;
 }
 
-// What run_recipe() and recipe_spec() both start from (inside a DepthGuard): the nesting
+// What run_recipe() and recipe_spec() both start from: the nesting
 // checked, the recipe validated, its method and options, its config,
 // its output space `to` and each sample's colour space ("" = from the file).
 struct Prepared {
+    DepthGuard depth; ///< one level of recipe nesting while it lives
     const Method* method = nullptr;
     MethodOptions options; ///< the recipe's, or the method's defaults
     std::unique_ptr<ColorConfig> colors;
@@ -99,7 +100,6 @@ bool prepare(const Recipe& recipe, Prepared& p, std::string& error)
 bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImage>* subbands,
     std::string& error)
 {
-    DepthGuard depth;
     Prepared p;
     if (!prepare(recipe, p, error))
         return false;
@@ -134,7 +134,6 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
 
 bool recipe_spec(const Recipe& recipe, OIIO::ImageSpec& spec, std::string& error)
 {
-    DepthGuard depth;
     Prepared p;
     if (!prepare(recipe, p, error))
         return false;
