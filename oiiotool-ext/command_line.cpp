@@ -284,7 +284,10 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             stack.push_back({ ItemKind::Image, args[i] });
         } else if (is_flag(a)) {
             if (a == "--help" || a == "-h") {
-                print_help();
+                if (i + 1 < args.size()) // --help METHOD
+                    print_method_help(method_for_help(args[i + 1]));
+                else
+                    print_help();
                 return Early::Exit;
             }
             if (a == "--version") {
@@ -304,6 +307,10 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             const Method* m = name.rfind("--", 0) == 0 ? find_method(name.substr(2)) : nullptr;
             if (!m)
                 throw CliError(unknown_command(a, name));
+            if (modifiers == "help") {
+                print_method_help(*m);
+                return Early::Exit;
+            }
             check_written(i);
             MethodOptions options = command_options(name, *m, modifiers, inputs, side_outputs);
             const std::vector<PlannedItem> popped

@@ -69,6 +69,7 @@ bool run_copying_method(const MethodOptions& options, const std::vector<MethodIn
 /// `synthesize` out, options WithSourceMap<Options>.
 template <class Options>
 Method copying_method(const char* name, const char* doc, const char* summary, const char* help,
+    const char* example, const char* suits,
     bool (*synthesize)(OIIO::ImageBuf&, const OIIO::ImageBuf&, const Options&, OIIO::ImageBuf*))
 {
     return { name, MethodInputs::Image, MethodOutput::Image,
@@ -79,7 +80,7 @@ Method copying_method(const char* name, const char* doc, const char* summary, co
             return run_copying_method<Options>(
                 options, inputs, settings, result, error, synthesize);
         },
-        doc, summary, help };
+        doc, summary, help, example, suits };
 }
 
 } // namespace texsyn::detail

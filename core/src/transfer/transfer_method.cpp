@@ -51,7 +51,9 @@ const Method& transfer_method()
         "(its layout, the sample's statistics)",
         "Texture transfer: pops a sample or analysis (top) and an image (below it) and gives "
         "the image's layout the sample's statistics, at the image's size.",
-        true };
+        "texsyn data/samples/marble_pink.png data/samples/rust.png --transfer -o "
+        "marble_in_rust.exr",
+        "an image's layout in a sample's texture", true };
     return m;
 }
 
