@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // End-to-end runs of the help: --help METHOD and --METHOD:help (generated from the method
-// registry, their examples run), --list-methods, the general help's choice of method, and
-// the suggestions for misspelt commands and options.
+// registry, their examples run), --list-methods, the general help's choice of method and
+// -d rule, and the suggestions for misspelt commands and options.
 #include <texsyn/methods.h>
 
 #include "cli_fixture.h"
@@ -137,4 +137,35 @@ TEST_F(Cli, MisspeltCommandsAndOptionsGetASuggestion)
     // Far from every name: no guess.
     expect_failure("stucco.png --frobnicate -o out.exr",
         "texsyn ERROR: unknown command or option '--frobnicate' (see texsyn --help)");
+}
+
+// -d's default, as --help states it: the input's type where the format holds it, else the
+// format's first type; OIIO's TIFF writer stores half as float.
+TEST_F(Cli, HelpStatesTheOutputTypeRule)
+{
+    CliRun r = texsyn("--help");
+    ASSERT_EQ(r.status, 0);
+    std::string text = r.out.substr(r.out.find("-d TYPE"));
+    text = text.substr(0, text.find("--subbands"));
+    std::string words; // the lines joined, without their indentation
+    std::istringstream in(text);
+    for (std::string word; in >> word;)
+        words += (words.empty() ? "" : " ") + word;
+    EXPECT_TRUE(contains(words, "Default: the input's type if the format holds it")) << words;
+    EXPECT_TRUE(contains(words, "else half for EXR, float for HDR, uint8 for PNG, JPEG, TIFF"))
+        << words;
+    EXPECT_TRUE(contains(words, "a half EXR input gives a float TIFF")) << words;
+
+    write_sample("half.exr", 3, OIIO::TypeHalf);
+    const std::string synth = " --pyramid:size=16x16:iterations=1 ";
+    ASSERT_EQ(texsyn("half.exr" + synth + "-o half.tif -o half.png -o half_out.exr").status, 0);
+    EXPECT_EQ(file_type("half.tif"), OIIO::TypeFloat);
+    EXPECT_EQ(file_type("half.png"), OIIO::TypeUInt8);
+    EXPECT_EQ(file_type("half_out.exr"), OIIO::TypeHalf);
+    write_sample("deep.png", 3, OIIO::TypeUInt16);
+    ASSERT_EQ(texsyn("deep.png" + synth + "-o deep.tif -o deep.exr").status, 0);
+    EXPECT_EQ(file_type("deep.tif"), OIIO::TypeUInt16);
+    EXPECT_EQ(file_type("deep.exr"), OIIO::TypeHalf);
+    ASSERT_EQ(texsyn("stucco.png" + synth + "-o out.tif").status, 0);
+    EXPECT_EQ(file_type("out.tif"), OIIO::TypeUInt8);
 }
