@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "command_line.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <unistd.h>
@@ -9,6 +10,7 @@
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
 
+#include <texsyn/error_text.h>
 #include <texsyn/io.h>
 #include <texsyn/memory.h>
 
@@ -18,17 +20,43 @@
 
 namespace texsyn::cli {
 
+namespace {
+
+const std::vector<std::string> k_with_argument = { "--seed", "--threads", "--colorconfig",
+    "--iscolorspace", "--tocolorspace", "-d", "-o", "--recipe", "--max-memory" };
+const std::vector<std::string> k_flags
+    = { "-v", "--subbands", "--help", "-h", "--version", "--list-methods" };
+
+bool listed(const std::vector<std::string>& list, const std::string& a)
+{
+    return std::find(list.begin(), list.end(), a) != list.end();
+}
+
+// The message for `arg`, which is no option or command: with the nearest one's name if it
+// looks like a slip of the keyboard.
+std::string unknown_command(const std::string& arg, const std::string& name)
+{
+    std::vector<std::string> known = k_with_argument;
+    known.insert(known.end(), k_flags.begin(), k_flags.end());
+    known.push_back("--apply-map");
+    for (const Method* m : methods())
+        known.push_back("--" + m->name);
+    const std::string guess = closest_name(name, known);
+    if (guess.empty())
+        return "unknown command or option '" + arg + "' (see texsyn --help)";
+    return "unknown command '" + name + "' (did you mean " + guess + "?)";
+}
+
+} // namespace
+
 bool takes_argument(const std::string& a)
 {
-    return a == "--seed" || a == "--threads" || a == "--colorconfig" || a == "--iscolorspace"
-        || a == "--tocolorspace" || a == "-d" || a == "-o" || a == "--recipe"
-        || a == "--max-memory";
+    return listed(k_with_argument, a);
 }
 
 bool is_flag(const std::string& a)
 {
-    return a == "-v" || a == "--subbands" || a == "--help" || a == "-h" || a == "--version"
-        || a == "--list-methods";
+    return listed(k_flags, a);
 }
 
 std::pair<std::string, std::string> split_command(const std::string& a)
@@ -256,7 +284,10 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             stack.push_back({ ItemKind::Image, args[i] });
         } else if (is_flag(a)) {
             if (a == "--help" || a == "-h") {
-                print_help();
+                if (i + 1 < args.size()) // --help METHOD
+                    print_method_help(method_for_help(args[i + 1]));
+                else
+                    print_help();
                 return Early::Exit;
             }
             if (a == "--version") {
@@ -275,7 +306,11 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             const auto [name, modifiers] = split_command(a);
             const Method* m = name.rfind("--", 0) == 0 ? find_method(name.substr(2)) : nullptr;
             if (!m)
-                throw CliError("unknown command or option '" + a + "' (see texsyn --help)");
+                throw CliError(unknown_command(a, name));
+            if (modifiers == "help") {
+                print_method_help(*m);
+                return Early::Exit;
+            }
             check_written(i);
             MethodOptions options = command_options(name, *m, modifiers, inputs, side_outputs);
             const std::vector<PlannedItem> popped

@@ -27,8 +27,9 @@ enum class Early { Run, Exit };
 /// Sets the global options from `args`, parses every command's options into
 /// state.options, and checks the whole command line as the run will see it: the stack's
 /// items (count and kind) for every command and output, the outputs' names and formats,
-/// the files options read and write, colour space names. Prints --help, --version or
-/// --list-methods (returning Exit). Throws CliError on the first problem.
+/// the files options read and write, colour space names. Prints --help (--help METHOD,
+/// --METHOD:help), --version or --list-methods (returning Exit). Throws CliError on the
+/// first problem.
 Early check_command_line(CliState& state, const std::vector<std::string>& args);
 
 } // namespace texsyn::cli

@@ -46,4 +46,12 @@ void print_help();
 void print_methods();
 void print_version();
 
+/// The registry row that `--help TOPIC` asks about (TOPIC is NAME or --NAME); throws
+/// CliError naming TOPIC, with a suggestion and the list of methods, if there is none.
+const Method& method_for_help(const std::string& topic);
+
+/// Prints `--help NAME` (and `--NAME:help`) to stdout: the row's summary, help text, every
+/// option with its allowed values, default and meaning, its example and its doc pages.
+void print_method_help(const Method& method);
+
 } // namespace texsyn::cli

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// --help, --list-methods, --version: the commands and their options come from the method
-// registry.
+// --help, --help METHOD (--METHOD:help), --list-methods, --version: the commands, their
+// options, examples and the textures they suit come from the method registry.
+#include "cli_error.h"
 #include "commands.h"
 
+#include <algorithm>
 #include <cstdio>
 
+#include <texsyn/error_text.h>
 #include <texsyn/version.h>
 
 namespace texsyn::cli {
@@ -67,7 +70,8 @@ void print_help()
         "reads an image, a command pops its inputs and pushes its result, -o writes the top.\n"
         "\n"
         "Global options:\n"
-        "    --help                Print this help and exit\n"
+        "    --help [METHOD]       Print this help, or METHOD's with an example (also\n"
+        "                          --METHOD:help), and exit\n"
         "    --version             Print the version and exit\n"
         "    --list-methods        List the commands and exit\n"
         "    -v                    Verbose: progress and timings on stderr\n"
@@ -83,8 +87,11 @@ void print_help()
         "    --tocolorspace NAME   Colour space to write the current (or every) image in\n"
         "                          (default: scene_linear for float outputs such as EXR,\n"
         "                          the input's space for integer outputs such as PNG)\n"
-        "    -d TYPE               Output pixel type: uint8, uint16, half, float\n"
-        "                          (default: half for EXR, uint8 otherwise)\n"
+        "    -d TYPE               Output pixel type: uint8, uint16, half, float. Default:\n"
+        "                          the input's type if the format holds it (16-bit PNG\n"
+        "                          in, 16-bit PNG out), else half for EXR, float for HDR,\n"
+        "                          uint8 for PNG, JPEG, TIFF and others; TIFF stores half\n"
+        "                          as float (a half EXR input gives a float TIFF)\n"
         "    --subbands            -o writes a multi-part EXR: part 'synth' plus every\n"
         "                          pyramid subband of the sample and the synthesis\n"
         "\n"
@@ -99,12 +106,17 @@ void print_help()
         "                          MAP: height, normal or roughness maps follow the colour.\n"
         "                          Written in IMAGE's colour space by default\n"
         "\n"
-        "Commands (--NAME:name=value:name=value...). Which method for which texture\n"
-        "(docs/which-method.md): stochastic (rust, stucco) --pyramid; small structure,\n"
-        "foliage --neighborhood; structured, regular, oriented (bricks, tiles, weave,\n"
-        "wood) --patch; the sample's colour histogram kept exactly --choosy; no sample\n"
-        "--cascade.\n",
+        "Which method for which texture (docs/which-method.md):\n",
         version());
+    size_t width = 0;
+    for (const Method* m : methods())
+        width = std::max(width, m->suits.size());
+    for (const Method* m : methods())
+        if (!m->suits.empty())
+            std::printf("    %-*s  --%s\n", int(width), m->suits.c_str(), m->name.c_str());
+    std::printf("\n"
+                "Commands (--NAME:name=value:name=value...; texsyn --help NAME or --NAME:help\n"
+                "prints one with an example):\n");
     for (const Method* m : methods())
         print_method(*m);
     std::printf("\n"
@@ -122,10 +134,51 @@ void print_help()
                 "    texsyn --cascade:size=512x512:levels=4:r=3.9 -o cascade.exr\n");
 }
 
+const Method& method_for_help(const std::string& topic)
+{
+    const std::string name = topic.rfind("--", 0) == 0 ? topic.substr(2) : topic;
+    if (const Method* m = find_method(name))
+        return *m;
+    std::vector<std::string> names;
+    for (const Method* m : methods())
+        names.push_back(m->name);
+    const std::string guess = closest_name(name, names);
+    std::string list;
+    for (const std::string& n : names)
+        list += (list.empty() ? "" : ", ") + n;
+    throw CliError("--help " + topic + " : unknown method ("
+        + (guess.empty() ? "" : "did you mean " + guess + "? ") + "methods: " + list + ")");
+}
+
+void print_method_help(const Method& m)
+{
+    const MethodOptions defaults = m.defaults();
+    const auto& fields = defaults.table().fields();
+    std::printf("texsyn --%s: %s\n\n", m.name.c_str(), m.summary.c_str());
+    std::printf("Usage: --%s%s\n", m.name.c_str(), fields.empty() ? "" : "[:name=value...]");
+    print_wrapped(m.help, "    ", "    ", 74);
+    if (!fields.empty()) {
+        std::printf("\nOptions (name, allowed values, default, meaning):\n");
+        for (const OptionField& f : fields) {
+            const std::string value = defaults.value(f.name);
+            const std::string pad(f.name.size() < 14 ? 14 - f.name.size() : 1, ' ');
+            std::printf("    %s%s%s; default %s\n", f.name.c_str(), pad.c_str(), f.allowed.c_str(),
+                value.empty() ? "none" : value.c_str());
+            print_wrapped(f.help, "        ", "        ", 70);
+        }
+    }
+    std::printf("\nExample:\n    %s\n", m.example.c_str());
+    std::printf("\nGuide: docs/%s%s\n", m.doc.c_str(),
+        fields.empty() ? "" : ("; options: docs/options-" + m.name + ".md").c_str());
+}
+
 void print_methods()
 {
+    size_t width = 0;
     for (const Method* m : methods())
-        std::printf("%-13s %s\n", m->name.c_str(), m->summary.c_str());
+        width = std::max(width, m->name.size());
+    for (const Method* m : methods())
+        std::printf("%-*s  %s\n", int(width), m->name.c_str(), m->summary.c_str());
 }
 
 void print_version()

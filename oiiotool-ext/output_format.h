@@ -12,8 +12,9 @@ namespace texsyn::cli {
 /// format holds it; by default the input's type where the format holds it (16-bit PNG in,
 /// 16-bit PNG out; float EXR in, float EXR out), else the format's first type: half for
 /// OpenEXR, float for Radiance HDR, uint8 for PNG, JPEG, TIFF and formats texsyn does not
-/// know. Throws CliError naming -d and the types the format holds if `requested` does not
-/// fit a format texsyn knows.
+/// know. TIFF holds half here, but OIIO's TIFF writer stores it as float: a half input
+/// (or -d half) gives a float TIFF file. Throws CliError naming -d and the types the format holds
+/// if `requested` does not fit a format texsyn knows.
 OIIO::TypeDesc output_pixel_type(
     const std::string& filename, OIIO::TypeDesc requested, OIIO::TypeDesc input_type);
 

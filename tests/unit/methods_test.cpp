@@ -51,6 +51,8 @@ TEST(Methods, EveryRowIsComplete)
         EXPECT_EQ(find_method(m->name), m);
         EXPECT_FALSE(m->summary.empty());
         EXPECT_FALSE(m->help.empty());
+        EXPECT_EQ(m->example.find("texsyn "), 0u) << m->example;
+        EXPECT_NE(m->example.find("--" + m->name), std::string::npos) << m->example;
         EXPECT_TRUE(std::filesystem::exists(std::string(TEXSYN_SOURCE_DIR) + "/docs/" + m->doc))
             << m->doc;
         ASSERT_TRUE(m->defaults);

@@ -178,3 +178,22 @@ TEST(Options, EchoedTextIsPrintableAndCut)
         "unknown key '" + std::string(60, 'a') + "...(5004 characters)'");
     EXPECT_EQ(readable_message("short words stay"), "short words stay");
 }
+
+// "Did you mean …?" suggests the nearest name within max(2, length/3) edits; a swap of two
+// neighbours is one edit, case is ignored, and nothing is suggested for a far word.
+TEST(Options, ClosestNameSuggestsANearName)
+{
+    const std::vector<std::string> options = { "size", "iterations", "scales", "seed" };
+    EXPECT_EQ(closest_name("sise", options), "size");
+    EXPECT_EQ(closest_name("iteartions", options), "iterations"); // a swap
+    EXPECT_EQ(closest_name("Scales", options), "scales");
+    EXPECT_EQ(closest_name("itrations", options), "iterations");
+    EXPECT_EQ(closest_name("levels", options), "");
+    EXPECT_EQ(closest_name("size", options), "");   // a known name needs no suggestion
+    EXPECT_EQ(closest_name("sz", options), "size"); // 2 edits, the least limit
+    EXPECT_EQ(closest_name("", {}), "");
+    const std::vector<std::string> commands = { "--pyramid", "--neighborhood", "--seed" };
+    EXPECT_EQ(closest_name("--neighbourhood", commands), "--neighborhood");
+    EXPECT_EQ(closest_name("--frobnicate", commands), "");
+    EXPECT_EQ(closest_name(std::string(1000, 'a'), commands), "");
+}

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace texsyn {
 
@@ -17,5 +18,11 @@ std::string printable_text(std::string_view text);
 /// around the word and a colon or comma ending it are kept and not counted), so that
 /// echoing a 100 kB argument or name does not make a 100 kB line.
 std::string readable_message(std::string_view message);
+
+/// The name in `names` nearest `word` — by Damerau–Levenshtein distance (insertions,
+/// deletions, substitutions and swaps of neighbours), ignoring case — if it is at most
+/// max(2, size of word / 3) edits away: what a "did you mean …?" suggests. "" if none is
+/// that near, or if `word` is itself one of the names. Ties go to the earlier name.
+std::string closest_name(std::string_view word, const std::vector<std::string>& names);
 
 } // namespace texsyn

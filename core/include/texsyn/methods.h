@@ -211,8 +211,8 @@ using MethodRun = std::function<bool(const MethodOptions& options,
     MethodResult& result, std::string& error)>;
 
 /// One row of the registry. Rows are written as aggregates, in member order: name, what
-/// it takes and gives, its options and run, its doc page and texts, then the optional
-/// members.
+/// it takes and gives, its options and run, its doc page and texts (summary, help, example,
+/// suits), then the optional members.
 struct Method {
     std::string name; ///< "pyramid": the command --pyramid, a recipe's "method": "pyramid"
     MethodInputs inputs = MethodInputs::Image;
@@ -220,9 +220,15 @@ struct Method {
     /// The options with their defaults.
     std::function<MethodOptions()> defaults;
     MethodRun run;
-    std::string doc;       ///< its page in docs/, e.g. "choosy.md"
-    std::string summary;   ///< one line (--list-methods)
-    std::string help;      ///< what it does with the stack and its result (--help)
+    std::string doc;     ///< its page in docs/, e.g. "choosy.md"
+    std::string summary; ///< one line (--list-methods)
+    std::string help;    ///< what it does with the stack and its result (--help)
+    /// One command line that runs it, on samples bundled in data/samples, from the
+    /// repository's root (--help NAME prints it; a test runs it).
+    std::string example;
+    /// The textures it is the method for, a few words for --help's "which method" table
+    /// (e.g. "stochastic, noise-like: rust, stucco"); "" for a row that makes no texture.
+    std::string suits;
     bool subbands = false; ///< it can give its pyramid's subbands (--subbands)
     /// Samples: how many the options ask for.
     std::function<int(const MethodOptions&)> count = {};

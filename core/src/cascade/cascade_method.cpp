@@ -106,7 +106,8 @@ const Method& cascade_method()
         "noise; else it replaces the current image by a texture transfer from it, at its size "
         "unless size= is given. The result is scene-linear (one channel Y, or RGB with ramp= "
         "or palette=).",
-        false, {}, {}, cascade_shorthands, cascade_layout };
+        "texsyn --seed 1 --cascade:preset=stone:size=512x512 -o stone.exr",
+        "no sample: a procedural look", false, {}, {}, cascade_shorthands, cascade_layout };
     return m;
 }
 

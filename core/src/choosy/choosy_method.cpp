@@ -36,7 +36,8 @@ const Method& choosy_method()
         "Laplacian inversion, each sample pixel's score penalised by its use count (keeps the "
         "sample's histogram), isotropic by default, toroidal. Each side of size must be a "
         "multiple of 2^(levels-1).",
-        choosy_synthesize, choosy_layout);
+        "texsyn data/samples/leaves_autumn.png --choosy:size=256x256 -o leaves_big.exr",
+        "the sample's colour histogram kept exactly", choosy_synthesize, choosy_layout);
     return m;
 }
 

@@ -51,7 +51,8 @@ const Method& check_method()
         "mean and contrast, score and warnings",
         "Print how homogeneous the current image is: lighting gradient, local mean and "
         "contrast variation, score and warnings (Heeger & Bergen section 6). Leaves the image "
-        "where it is; needs no -o." };
+        "where it is; needs no -o.",
+        "texsyn data/samples/rust.png --check", "" };
     return m;
 }
 

@@ -70,6 +70,7 @@ bool run_copying_method(const MethodOptions& options, const std::vector<MethodIn
 /// (a MethodLayout for the method's own options and the one sample).
 template <class Options>
 Method copying_method(const char* name, const char* doc, const char* summary, const char* help,
+    const char* example, const char* suits,
     bool (*synthesize)(OIIO::ImageBuf&, const OIIO::ImageBuf&, const Options&, OIIO::ImageBuf*),
     bool (*layout)(
         const Options&, const InputLayout&, const MethodOptions&, ResultLayout&, std::string&))
@@ -82,7 +83,7 @@ Method copying_method(const char* name, const char* doc, const char* summary, co
             return run_copying_method<Options>(
                 options, inputs, settings, result, error, synthesize);
         },
-        doc, summary, help };
+        doc, summary, help, example, suits };
     m.layout = [layout](const MethodOptions& options, const std::vector<InputLayout>& inputs,
                    ResultLayout& result, std::string& error) {
         return layout(

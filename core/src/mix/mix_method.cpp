@@ -52,7 +52,10 @@ const Method& mix_method()
         "statistics of J), split=S (scales >= S and the low-pass of sample 0, finer bands of "
         "sample 1) or weights=W0,W1,... (averaged histograms; pops one image per weight, else "
         "2).",
-        true, [](const MethodOptions& o) { return options_of<MixOptions>(o).nsamples(); },
+        "texsyn data/samples/rust.png data/samples/marble_pink.png "
+        "--mix:palette=0:pattern=1:size=256x256 -o rust_marble.exr",
+        "one sample's colours with another's pattern", true,
+        [](const MethodOptions& o) { return options_of<MixOptions>(o).nsamples(); },
         [](const MethodOptions& o) { return options_of<MixOptions>(o).palette.value_or(0); }, {},
         mix_layout };
     return m;

@@ -29,7 +29,8 @@ const Method& neighborhood_method()
         "coherent), toroidal, with source maps",
         "Wei & Levoy 2000 neighbourhood synthesis of the current image (scanline order, causal "
         "L-shaped neighbourhoods, Gaussian pyramid, toroidal).",
-        neighborhood_synthesize, neighborhood_layout);
+        "texsyn data/samples/pebbles.png --neighborhood:size=256x256 -o pebbles_big.exr",
+        "small structures: foliage, grass, pebbles", neighborhood_synthesize, neighborhood_layout);
     return m;
 }
 

@@ -2,6 +2,8 @@
 // The option kinds: text <-> value, range checks and every option message, written once.
 #include <texsyn/options.h>
 
+#include <texsyn/error_text.h>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -234,9 +236,15 @@ bool OptionList::set(
 {
     const OptionField* f = find(name);
     if (!f) {
+        std::vector<std::string> known;
+        for (const OptionField& field : m_fields)
+            known.push_back(field.name);
+        const std::string guess = closest_name(name, known);
         error = option_error(name, value,
-            m_fields.empty() ? "unknown option (it takes none)"
-                             : "unknown option (known: " + names() + ")");
+            !guess.empty()
+                ? "unknown option '" + std::string(name) + "' (did you mean " + guess + "?)"
+                : known.empty() ? "unknown option (it takes none)"
+                                : "unknown option (known: " + names() + ")");
         return false;
     }
     return f->parse(opts, value, error);

@@ -84,7 +84,9 @@ const Method& patch_method()
         "Texture optimization of the current image (Kwatra et al. 2005, Kaspar et al. 2015): "
         "coarse to fine, PatchMatch search and robust voting of toroidal patches, histogram "
         "matched, repetition penalised; keeps bricks, tiles, weave and wood grain whole. Every "
-        "output pixel is a sample pixel (map= writes where from)." };
+        "output pixel is a sample pixel (map= writes where from).",
+        "texsyn data/samples/bricks.png --patch:size=512x512 -o bricks_big.exr",
+        "structured: bricks, tiles, weave, wood grain" };
     return m;
 }
 

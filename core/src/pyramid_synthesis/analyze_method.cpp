@@ -43,7 +43,8 @@ const Method& analyze_method()
         "synthesize from without the sample",
         "Replace the current image by its pyramid analysis, to write as *.tsa and synthesize "
         "from with --pyramid, --mix or --transfer. Only the options that shape an analysis "
-        "apply." };
+        "apply.",
+        "texsyn data/samples/rust.png --analyze -o rust.tsa", "" };
     return m;
 }
 

@@ -38,7 +38,8 @@ const Method& pyramid_method()
         "seamless",
         "Heeger & Bergen 1995 pyramid synthesis of the current image or analysis (*.tsa): noise "
         "matched to the sample's pixel and subband histograms, circular, so it tiles.",
-        true };
+        "texsyn data/samples/rust.png --pyramid:size=512x512 -o rust_512.exr",
+        "stochastic, noise-like: rust, stucco, sand", true };
     return m;
 }
 

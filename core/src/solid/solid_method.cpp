@@ -44,7 +44,8 @@ const Method& solid_method()
         "Heeger & Bergen 1995 section 4 solid texture of the current image: a 3-D block whose "
         "slices look like it. Write it with -o FILE.vdb (OpenVDB: grids Cd and density) or -o "
         "FILE.exr (one part per z slice).",
-        false, {}, {}, {}, solid_layout };
+        "texsyn data/samples/marble_pink.png --solid:size=32x32x32:iterations=1 -o marble.vdb",
+        "a 3-D block whose slices look like the sample", false, {}, {}, {}, solid_layout };
     return m;
 }
 

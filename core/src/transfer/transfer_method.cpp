@@ -57,15 +57,16 @@ bool transfer_layout(const MethodOptions& options, const std::vector<InputLayout
 
 const Method& transfer_method()
 {
-    static Method m { "transfer", MethodInputs::ImageAndSample, MethodOutput::Image,
+    static const Method m { "transfer", MethodInputs::ImageAndSample, MethodOutput::Image,
         [] { return MethodOptions(PyramidOptions(), transfer_table()); }, run_transfer,
         "mixtures.md",
         "Heeger & Bergen 1995 section 5: match-texture applied to an image instead of noise "
         "(its layout, the sample's statistics)",
         "Texture transfer: pops a sample or analysis (top) and an image (below it) and gives "
         "the image's layout the sample's statistics, at the image's size.",
-        true };
-    m.layout = transfer_layout;
+        "texsyn data/samples/marble_pink.png data/samples/rust.png --transfer -o "
+        "marble_in_rust.exr",
+        "an image's layout in a sample's texture", true, {}, {}, {}, transfer_layout };
     return m;
 }
 
