@@ -144,10 +144,11 @@ oiiotool "$out/nb_colour.png" "$out/nb_height_big.png" --ch 0,0,0 --mosaic:pad=4
     -o "$out/neighborhood_apply_map.png"
 rm -f "$out"/nb_*
 # docs/choosy.md: choosy sampling against greedy selection on flowers, isotropic=0 and 1 on
-# wood grain, and one pass per level against iterations=1,8 (seed 1).
-"$texsyn" --seed 1 "$samples/flowers.png" --choosy:size=256x256 -o "$out/ch_choosy.png"
-"$texsyn" --seed 1 "$samples/flowers.png" --choosy:size=256x256:penalty=0 -o "$out/ch_greedy.png"
-"$texsyn" --seed 1 "$samples/flowers.png" --choosy:size=256x256:iterations=1,8 -o "$out/ch_iter.png"
+# wood grain, and one pass per level against iterations=1,8 (seed 1; flowers with
+# isotropic=1, the paper's setting).
+"$texsyn" --seed 1 "$samples/flowers.png" --choosy:size=256x256:isotropic=1 -o "$out/ch_choosy.png"
+"$texsyn" --seed 1 "$samples/flowers.png" --choosy:size=256x256:isotropic=1:penalty=0 -o "$out/ch_greedy.png"
+"$texsyn" --seed 1 "$samples/flowers.png" --choosy:size=256x256:isotropic=1:iterations=1,8 -o "$out/ch_iter.png"
 oiiotool "$samples/flowers.png" --resize 256x256 "$out/ch_choosy.png" "$out/ch_greedy.png" \
     --mosaic:pad=4 3x1 -o "$out/choosy_flowers_greedy.png"
 oiiotool "$out/ch_choosy.png" "$out/ch_iter.png" --mosaic:pad=4 2x1 -o "$out/choosy_flowers_iterations.png"

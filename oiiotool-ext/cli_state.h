@@ -13,6 +13,7 @@
 #include <texsyn/methods.h>
 
 #include "output_transaction.h"
+#include "progress_meter.h"
 #include "stack.h"
 
 namespace texsyn::cli {
@@ -24,7 +25,8 @@ struct CliState {
     size_t max_memory = 0; ///< --max-memory in bytes; 0 = the default limit
     bool verbose = false;
     bool subbands = false;
-    bool progress = false; ///< -v or stderr is a terminal
+    ProgressMode progress = ProgressMode::Off; ///< progress_mode(-v, stderr is a terminal)
+    double progress_interval = 5.0;            ///< Lines mode: seconds between lines
     std::string colorconfig_path;
     std::string pending_iscolorspace; ///< --iscolorspace seen before any input
     std::string pending_tocolorspace; ///< --tocolorspace seen before any image

@@ -20,8 +20,9 @@ void push_input(CliState& state, const std::string& filename);
 void reinterpret_input(CliState& state, const std::string& colorspace);
 
 /// `--NAME[:modifiers]` of registry row `method` with its parsed `options`: pops its inputs,
-/// runs it (progress on a terminal, a timing line with -v), pushes its result (a report is
-/// printed and its input stays), and writes the files its output-file options name.
+/// runs it (progress as progress_meter.h says, a timing line with -v), pushes its result (a
+/// report is printed and its input stays), and writes the files its output-file options
+/// name.
 void run_method_command(CliState& state, const Method& method, const MethodOptions& options);
 
 /// Writes the top item for `filename`: an image in the colour space and pixel type of the

@@ -147,7 +147,10 @@ int main(int argc, char* argv[])
             check_stdout();
             return 0;
         }
-        state.progress = ::isatty(STDERR_FILENO);
+        state.progress = progress_mode(state.verbose, ::isatty(STDERR_FILENO));
+        if (std::string error; !progress_interval(
+                std::getenv("TEXSYN_PROGRESS_INTERVAL"), state.progress_interval, error))
+            throw CliError(error);
         texsyn::set_memory_limit(state.max_memory);
         if (state.threads > 0)
             OIIO::attribute("threads", state.threads);

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 
 #include <OpenImageIO/filesystem.h>
 
@@ -78,12 +79,17 @@ std::shared_ptr<const Recipe> recipe_of(CliState& state, const Method& m,
     return recipe;
 }
 
-std::function<void(float)> progress_reporter(const std::string& command)
+void print_progress(const std::string& text)
 {
-    return [command](float fraction) {
-        std::fprintf(stderr, "\rtexsyn: %s %3d%%", command.c_str(), int(fraction * 100.0f + 0.5f));
-        std::fflush(stderr);
-    };
+    if (text.empty())
+        return;
+    std::fputs(text.c_str(), stderr);
+    std::fflush(stderr);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // Writes `image`, the file of output-file option `option` (e.g. a source map), to `file`
@@ -127,14 +133,19 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     settings.seed = state.seed;
     settings.nthreads = state.threads;
     settings.subbands = state.subbands && m.subbands;
-    if (state.progress && m.output != MethodOutput::Report)
-        settings.progress = progress_reporter(command);
+    const auto start = std::chrono::steady_clock::now();
+    std::shared_ptr<ProgressMeter> meter;
+    if (state.progress != ProgressMode::Off && m.output != MethodOutput::Report) {
+        meter = std::make_shared<ProgressMeter>(command, state.progress, state.progress_interval);
+        print_progress(meter->start());
+        settings.progress
+            = [meter, start](float f) { print_progress(meter->update(f, seconds_since(start))); };
+    }
 
     MethodResult result;
-    const auto start = std::chrono::steady_clock::now();
     ok = run_method(m, options, in, files, settings, result, error);
-    if (settings.progress)
-        std::fprintf(stderr, "\n");
+    if (meter)
+        print_progress(meter->finish(ok, seconds_since(start)));
     if (!ok) {
         const bool names_input
             = error.find("sample") != std::string::npos || error.find("image") != std::string::npos;
@@ -180,8 +191,7 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     item.buf = std::move(result.image);
     item.subbands = std::move(result.subbands);
     if (state.verbose) {
-        const double secs
-            = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double secs = seconds_since(start);
         const std::string opts = item.buf.initialized()
             ? std::string(item.buf.spec().get_string_attribute("synth:options"))
             : options.format();

@@ -174,3 +174,26 @@ TEST_F(Cli, CascadeShorthands)
     same("kernel=1,2,1,2,4,2,1,2,1", "kernel=custom:ksize=3:weights=1,2,1,2,4,2,1,2,1");
     same("ramp=stucco.png", "palette=stucco.png");
 }
+
+// Options after a preset override it: palette= replaces the preset's ramp without
+// ramp=none (issue #16), also through the recipe it writes, and scale= applies on top.
+TEST_F(Cli, CascadePresetWithAPalette)
+{
+    OIIO::ImageBuf flat(OIIO::ImageSpec(8, 8, 3, OIIO::TypeUInt8));
+    OIIO::ImageBufAlgo::fill(flat, { 128 / 255.0f, 128 / 255.0f, 128 / 255.0f });
+    ASSERT_TRUE(flat.write((dir / "flat.png").string()));
+    const std::string look = "--seed 2 --cascade:size=32x32:preset=blotches";
+    CliRun r = texsyn(look + ":palette=flat.png -d float -o a.exr --recipe a.texsyn");
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(texsyn(look + ":ramp=none:palette=flat.png -d float -o b.exr").status, 0);
+    EXPECT_EQ(pixel_hash(read("a.exr")), pixel_hash(read("b.exr")));
+    EXPECT_NEAR(read("a.exr").getchannel(5, 5, 0, 0), 0.2158f, 2e-3);
+    const std::string reopen = "cd " + quote(dir.string()) + " && OIIO_LIBRARY_PATH="
+        + quote(TEXSYN_PLUGIN_DIR) + " oiiotool a.texsyn -d float -o again.exr";
+    ASSERT_EQ(std::system(reopen.c_str()), 0);
+    EXPECT_EQ(pixel_hash(read("again.exr")), pixel_hash(read("a.exr")));
+    r = texsyn("--seed 2 --cascade:size=32x32:preset=stone:palette=stucco.png:scale=2 -o c.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(read("c.exr").spec().get_string_attribute("synth:options").find(":scale=2:"),
+        std::string::npos);
+}

@@ -29,7 +29,7 @@ TEST_F(Cli, ChoosyWritesTheImageAndItsSourceMap)
     EXPECT_EQ(exr.spec().get_string_attribute("synth:method"), "choosy");
     EXPECT_EQ(exr.spec().get_string_attribute("synth:sample"), "stucco.png");
     const std::string options = exr.spec().get_string_attribute("synth:options");
-    EXPECT_EQ(options.find("size=64x64:levels=3:iterations=1,2:penalty=1:isotropic=1:"), 0u)
+    EXPECT_EQ(options.find("size=64x64:levels=3:iterations=1,2:penalty=1:isotropic=0:"), 0u)
         << options;
     // Every output pixel is the sample pixel the map names (8-bit in, 8-bit out: exact), and
     // the map re-applied to the sample gives the same picture.
@@ -139,4 +139,15 @@ TEST_F(Cli, BadChoosyRequestsAreRefused)
     expect_failure("nan.exr --choosy:size=32x32:levels=2 -o out.exr",
         "texsyn ERROR: nan.exr: pixel (3, 4) channel R is NaN; texsyn needs finite pixel values",
         { "stucco.png", "nan.exr" });
+}
+
+// On images choosy keeps the sample's orientation unless asked (issue #16): the default is
+// isotropic=0, as the output's synth:options and the recipe it writes say.
+TEST_F(Cli, ChoosyKeepsTheSamplesOrientationByDefault)
+{
+    CliRun r = texsyn("stucco.png --choosy:size=24x16:levels=2 -o out.exr --recipe out.texsyn");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(read("out.exr").spec().get_string_attribute("synth:options").find(":isotropic=0:"),
+        std::string::npos);
+    EXPECT_NE(slurp(dir / "out.texsyn").find("\"isotropic\": 0"), std::string::npos);
 }

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include <sys/stat.h>
@@ -465,11 +466,41 @@ TEST_F(Cli, SmallOutputsUseFewerScales)
         std::string::npos);
 }
 
-TEST_F(Cli, VerboseOutputIntoAPipeHasNoProgressLines)
+// Farm logs (issue #16): with -v and stderr not a terminal, plain progress lines with the
+// elapsed time and an estimate come every $TEXSYN_PROGRESS_INTERVAL seconds (here 0.05 s,
+// on a run of 0.3 s or more) and once at 100%, before the timing line; no live line
+// ('\r'). Without -v a pipeline stays quiet.
+TEST_F(Cli, VerboseOutputIntoAFileHasProgressLines)
 {
-    CliRun r = texsyn("-v stucco.png --pyramid:size=32x32:iterations=1 -o out.exr");
-    ASSERT_EQ(r.status, 0);
+    const std::string run = "--cascade:size=1024x1024:iterations=40 -o out.exr";
+    CliRun r = texsyn("-v " + run, "TEXSYN_PROGRESS_INTERVAL=0.05");
+    ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err.find('\r'), std::string::npos);
+    const std::regex progress(R"(texsyn: --cascade +(\d+)% elapsed \d+:\d\d eta \d+:\d\d)");
+    std::vector<int> percents;
+    std::istringstream lines(r.err);
+    std::string timing;
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch m;
+        if (std::regex_match(line, m, progress))
+            percents.push_back(std::stoi(m[1]));
+        else
+            timing = line;
+    }
+    ASSERT_GE(percents.size(), 2u) << r.err;
+    EXPECT_LT(percents.front(), 100) << r.err;
+    EXPECT_EQ(percents.back(), 100) << r.err;
+    EXPECT_EQ(std::count(percents.begin(), percents.end(), 100), 1) << r.err;
+    EXPECT_EQ(timing.find("texsyn: --cascade preset=none:size=1024x1024:"), 0u) << r.err;
+    r = texsyn(run, "TEXSYN_PROGRESS_INTERVAL=0.05");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    r = texsyn("-v --cascade:size=16x16 -o bad.exr", "TEXSYN_PROGRESS_INTERVAL=soon");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.first_err_line(),
+        "texsyn ERROR: TEXSYN_PROGRESS_INTERVAL=soon : expected seconds between progress lines, "
+        "0.01..3600");
+    EXPECT_FALSE(fs::exists(dir / "bad.exr"));
 }
 
 // A synthesis of a synthesis names what it was made from, not the file at the start.

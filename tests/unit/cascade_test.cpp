@@ -2,9 +2,12 @@
 // The cascade of iterated maps and convolutions: maps, kernels against a direct
 // implementation, dilation, wrap, determinism, transfer, ramps and bad options.
 #include <texsyn/cascade.h>
+#include <texsyn/fft.h>
 #include <texsyn/random.h>
 
 #include <cmath>
+#include <complex>
+#include <iostream>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -74,6 +77,43 @@ double correlation(const Plane& a, const Plane& b)
         bb += db * db;
     }
     return ab / std::sqrt(aa * bb);
+}
+
+// The dominant feature wavelength of an image, as a fraction of its shorter side: 1 / the
+// median frequency of its power spectrum (the channels' mean, DC left out), counting only
+// frequencies up to `band` cycles per side, so that images of different resolutions are
+// compared over the band they share (the finer one's sharper contours left out).
+double wavelength(const OIIO::ImageBuf& image, double low, double band)
+{
+    const PlanarImage p = planes_of(image);
+    const int w = p.width(), h = p.height(), side = std::min(w, h);
+    std::vector<float> v(size_t(w) * size_t(h), 0.0f);
+    for (const Plane& c : p.channels)
+        for (size_t i = 0; i < v.size(); ++i)
+            v[i] += c.data()[i] / float(p.channels.size());
+    std::string error;
+    const auto fft = RealFft2D::create(w, h, FftBackend::Kiss, error);
+    std::vector<std::complex<float>> spectrum(fft->spectrum_size());
+    fft->forward(v.data(), spectrum.data());
+    std::vector<std::pair<double, double>> power; // (cycles per side, power)
+    for (int ky = 0; ky < h; ++ky)
+        for (int kx = 0; kx <= w / 2; ++kx) {
+            const double fy = double(ky <= h / 2 ? ky : ky - h) * side / h,
+                         fx = double(kx) * side / w, f = std::hypot(fx, fy);
+            // Columns 1..w/2-1 stand for their negative twins too.
+            const double twice = kx == 0 || 2 * kx == w ? 1.0 : 2.0;
+            if (f >= low && f <= band)
+                power.push_back({ f,
+                    twice * std::norm(spectrum[size_t(ky) * size_t(w / 2 + 1) + size_t(kx)]) });
+        }
+    std::sort(power.begin(), power.end());
+    double total = 0, sum = 0;
+    for (const auto& [f, e] : power)
+        total += e;
+    for (const auto& [f, e] : power)
+        if ((sum += e) >= 0.5 * total)
+            return 1.0 / f;
+    return 1.0;
 }
 
 } // namespace
@@ -433,4 +473,58 @@ TEST(Cascade, EachLevelHasItsOwnOperator)
     OIIO::ImageBuf dst;
     EXPECT_FALSE(cascade_synthesize(dst, opt));
     EXPECT_NE(dst.geterror().find("levels=2"), std::string::npos);
+}
+
+// Resampling to the same size is the identity; a period-long cosine stays that cosine at
+// another size (Catmull-Rom is exact to ~1e-3 on it) and wraps around.
+TEST(CascadeScale, ResamplingIsCircularAndSmooth)
+{
+    const Plane noise = random_plane(24, 16, 3);
+    const Plane same = detail::resample_circular(noise, 24, 16, 0);
+    for (size_t i = 0; i < noise.size(); ++i)
+        ASSERT_EQ(same.data()[i], noise.data()[i]);
+    auto cosine = [](int w, int h) {
+        Plane p(w, h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                p(x, y) = float(std::cos(6.2831853 * (x + 0.5) / w));
+        return p;
+    };
+    for (auto [from, to] : { std::pair { 32, 128 }, { 128, 32 }, { 50, 77 } }) {
+        const Plane out = detail::resample_circular(cosine(from, 8), to, 8, 0);
+        const Plane want = cosine(to, 8);
+        for (size_t i = 0; i < out.size(); ++i)
+            ASSERT_NEAR(out.data()[i], want.data()[i], from < to ? 2e-3 : 2e-2)
+                << from << " to " << to << " at " << i;
+    }
+}
+
+// A preset is the same texture at any size: its dominant wavelength, as a fraction of the
+// image, is the same at 256x256 and 1024x1024 (within 10%: the 1024 lattice is the 256 one,
+// only resampled before its last map), and doubling scale doubles it (within 25%: another
+// lattice, so other noise). Measured from 3 to 128 cycles per side (the band both sizes
+// hold); so that a doubled wavelength stays well inside it, the doubling is measured from
+// scale=1 where the wavelength is under 0.1 of the image, else from scale=0.5.
+TEST(CascadeScale, PresetFeaturesKeepTheirSizeRelativeToTheImage)
+{
+    const OptionTable<CascadeOptions>& table = CascadeOptions::table();
+    for (const char* name : { "cells", "blotches", "fibres", "bands", "caustics", "stone" }) {
+        auto measure = [&](int side, float scale) {
+            CascadeOptions opt = options(side, side);
+            std::string error;
+            EXPECT_TRUE(table.set(opt, "preset", name, error)) << error;
+            opt.scale = scale;
+            const OIIO::ImageBuf out = cascade_synthesize(opt);
+            EXPECT_FALSE(out.has_error()) << out.geterror();
+            return wavelength(out, 3.0, 128.0);
+        };
+        const double small = measure(256, 1.0f), big = measure(1024, 1.0f);
+        const float from = big < 0.1 ? 1.0f : 0.5f;
+        const double base = from == 1.0f ? big : measure(1024, from),
+                     doubled = measure(1024, 2.0f * from);
+        std::cout << name << ": wavelength 256 " << small << ", 1024 " << big << "; scale=" << from
+                  << " " << base << ", scale=" << 2 * from << " " << doubled << "\n";
+        EXPECT_NEAR(big / small, 1.0, 0.1) << name;
+        EXPECT_NEAR(doubled / base, 2.0, 0.5) << name;
+    }
 }

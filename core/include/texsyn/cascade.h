@@ -68,6 +68,14 @@ struct CascadeOptions {
     float dmin = 1.0f;                   ///< dilation at control value 0
     float dmax = 1.0f;                   ///< dilation at control value 1
     CascadeTransfer transfer = CascadeTransfer::Luminance;
+    /// Feature size: the lattice runs at the output's size divided by
+    /// scale x (reference ? min(width, height) / reference : 1), at most 4 times the output's
+    /// side, and is resampled to the output's size before its last map (so features grow
+    /// smoothly, with sharp contours). reference = 0: features are the kernel's size in
+    /// output pixels; every preset sets 256, so that its look keeps its proportions at any
+    /// size.
+    float scale = 1.0f;
+    int reference = 0;
     /// A colour ramp: r,g,b triples (scene-linear), evenly spaced stops from value 0 to 1;
     /// empty = the lattice itself, one channel "Y".
     std::vector<float> ramp;
@@ -94,6 +102,8 @@ struct CascadeOptions {
 /// dmin + c (dmax - dmin) pixels at each pixel, sampled bilinearly; dilation 1 everywhere
 /// is exactly the undilated operator. With `rotation` (a one-channel control image, values
 /// clamped to [0, 1]) the taps are also turned by c turns (c x 360 degrees) at each pixel.
+/// The lattice runs at the size `scale` and `reference` give (see CascadeOptions::scale)
+/// and its last N(A) is resampled to the output's size (circularly) before the last map.
 /// The result is the last level, mapped through `palette` if given (an image, e.g. a
 /// texture sample in scene-linear: value v takes the colour of the palette pixel of rank v
 /// among its pixels sorted by luminance, so a procedural pattern wears the sample's

@@ -30,7 +30,8 @@ enum class ChoosySearch {
 };
 
 /// Options of choosy sampling. Defaults are the paper's (§5: four levels, one iteration
-/// per level, the 2-distant neighbourhood, isotropic; §6.2: 20 dimensions).
+/// per level, the 2-distant neighbourhood; §6.2: 20 dimensions) except `isotropic`, which
+/// is 0 on images.
 struct ChoosyOptions {
     int width = 0; ///< output size; 0x0 = the sample's size (after the crop, see below)
     int height = 0;
@@ -42,8 +43,9 @@ struct ChoosyOptions {
     /// 1 is the paper's choosy sampling, 0 the greedy best match (Wei & Levoy's selection).
     float penalty = 1.0f;
     /// 1: compare with the sample's neighbourhoods in all 8 rotations and reflections of the
-    /// grid (isotropic variants of anisotropic samples, §5); 0: the sample's orientation.
-    int isotropic = 1;
+    /// grid (isotropic variants of anisotropic samples, §5); 0 (the default, unlike the
+    /// paper's): the sample's orientation, so that wood grain or bricks keep their direction.
+    int isotropic = 0;
     ChoosySearch search = ChoosySearch::KdTree;
     int dims = 20; ///< kdtree: principal components kept (>= the vector size: all, exact)
     /// kdtree: nanoflann's approximation factor (0 = exact in PCA space). 30 was measured

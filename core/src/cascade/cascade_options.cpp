@@ -19,22 +19,22 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
         // after it override (docs/cascade.md shows them).
         t.preset("preset",
             { { "cells",
-                  "levels=1:kernel=dog7:map=logistic:r=3.9:iterations=5:"
+                  "reference=256:levels=1:kernel=dog7:map=logistic:r=3.9:iterations=5:"
                   "ramp=0.05,0.03,0.02,0.6,0.45,0.3" },
                 { "blotches",
-                    "levels=4:kernel=gauss5:map=sine:r=3.9,3.8,3.6,3.4:noise=0,0.1:"
+                    "reference=256:levels=4:kernel=gauss5:map=sine:r=3.9,3.8,3.6,3.4:noise=0,0.1:"
                     "iterations=4:ramp=0.1,0.12,0.1,0.9,0.88,0.85" },
                 { "fibres",
-                    "levels=3:kernel=aniso7:angle=25:map=logistic:r=3.7:iterations=5:"
+                    "reference=256:levels=3:kernel=aniso7:angle=25:map=logistic:r=3.7:iterations=5:"
                     "ramp=0.15,0.07,0.03,0.55,0.33,0.16" },
                 { "bands",
-                    "levels=5:kernel=gauss7:map=tent:r=3.2:iterations=3:noise=0,0.15:"
+                    "reference=256:levels=5:kernel=gauss7:map=tent:r=3.2:iterations=3:noise=0,0.15:"
                     "ramp=0.05,0.1,0.03,0.3,0.4,0.15" },
                 { "caustics",
-                    "levels=2:kernel=dog5:map=sine:r=4:iterations=8:"
+                    "reference=256:levels=2:kernel=dog5:map=sine:r=4:iterations=8:"
                     "ramp=0.01,0.05,0.15,0.6,0.8,0.9" },
                 { "stone",
-                    "levels=3:kernel=box3:map=curve:curve=0,0,0.45,1,0.55,1,1,0:"
+                    "reference=256:levels=3:kernel=box3:map=curve:curve=0,0,0.45,1,0.55,1,1,0:"
                     "iterations=6:ramp=0.2,0.1,0.05,0.7,0.5,0.35" } },
             "a named look (cells, blotches, fibres, bands, caustics, stone) setting the "
             "options below; options after it override it");
@@ -83,6 +83,12 @@ const OptionTable<CascadeOptions>& CascadeOptions::table()
                 { "channels", CascadeTransfer::Channels } },
             "with an input image: its luminance or each of its channels is the initial "
             "lattice");
+        t.real("scale", &O::scale, 0.25f, 16.0f,
+            "feature size multiplier: the lattice runs at the output's size divided by it (and "
+            "by size/reference), then is resampled to the output");
+        t.integer("reference", &O::reference, 0, detail::max_image_side,
+            "the shorter side at which features have the kernel's size in pixels; other sizes "
+            "scale them with the image (0 = fixed in pixels; every preset sets 256)");
         t.numbers("ramp", &O::ramp, 0.0f, 1000.0f, 3 * 64, "none",
             "colour ramp: r,g,b triples (scene-linear), evenly spaced from value 0 to 1 "
             "(default: the grey lattice, one channel)");

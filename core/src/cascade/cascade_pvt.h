@@ -39,6 +39,10 @@ void convolve_circular(const Plane& in, const CascadeKernelWeights& k, Plane& ou
 void convolve_warped(const Plane& in, const CascadeKernelWeights& k, const Plane& dilation,
     const Plane& angle, Plane& out, int nthreads);
 
+/// `in` resampled to width x height, circularly (so a tile stays a tile): separable
+/// Catmull-Rom, widened by the ratio when minifying. The same size returns `in` exactly.
+Plane resample_circular(const Plane& in, int width, int height, int nthreads);
+
 /// The tool's shorthands, rewritten into options: `map=curve:x0,y0,…` (a piece without '='
 /// after map=…curve) becomes curve=x0,y0,…; `kernel=w0,w1,…` (numbers) becomes
 /// kernel=custom:weights=… with ksize the square root of their count unless given;

@@ -19,11 +19,22 @@ struct Size {
     int w = 0, h = 0;
 };
 
-// Level sizes, coarsest first: the output halved (rounding up) levels-1-l times.
+// The finest lattice's size: the output's divided by the feature factor (cascade.h), which
+// is at least 1/4 so that a tiny output with a reference never asks for a huge lattice.
+Size lattice_size(const CascadeOptions& opt)
+{
+    const double relative
+        = opt.reference ? double(std::min(opt.width, opt.height)) / double(opt.reference) : 1.0;
+    const double factor = std::max(0.25, double(opt.scale) * relative);
+    auto side = [factor](int n) { return std::max(1, int(std::lround(double(n) / factor))); };
+    return { side(opt.width), side(opt.height) };
+}
+
+// Lattice sizes, coarsest first: the finest lattice halved (rounding up) levels-1-l times.
 std::vector<Size> level_sizes(const CascadeOptions& opt)
 {
     std::vector<Size> sizes(size_t(opt.levels));
-    sizes.back() = { opt.width, opt.height };
+    sizes.back() = lattice_size(opt);
     for (size_t l = sizes.size() - 1; l-- > 0;)
         sizes[l] = { (sizes[l + 1].w + 1) / 2, (sizes[l + 1].h + 1) / 2 };
     return sizes;
@@ -169,8 +180,10 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
     const double input_bytes = initial
         ? 8.0 * double(initial->spec().nchannels) * double(sizes[0].w) * double(sizes[0].h)
         : 0.0;
-    if (!detail::check_memory(
-            size_t(per_pixel * double(opt.width) * double(opt.height) + input_bytes),
+    const Size lattice = sizes.back();
+    const double pixels
+        = std::max(double(lattice.w) * double(lattice.h), double(opt.width) * double(opt.height));
+    if (!detail::check_memory(size_t(per_pixel * pixels + input_bytes),
             "size=" + std::to_string(opt.width) + "x" + std::to_string(opt.height), error)) {
         dst.errorfmt("{}", error);
         return false;
@@ -224,6 +237,12 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
                     detail::convolve_warped(a, kernel, spread, angle, scratch, opt.nthreads);
                 else
                     detail::convolve_circular(a, kernel, scratch, opt.nthreads);
+                // N(A) is smooth at the lattice's scale, so it resamples cleanly; the last
+                // map then draws its contours at the output's resolution.
+                const bool last = l == opt.levels - 1 && it == iterations - 1;
+                if (last && (s.w != opt.width || s.h != opt.height))
+                    scratch
+                        = detail::resample_circular(scratch, opt.width, opt.height, opt.nthreads);
                 detail::apply_cascade_map(scratch, map, r, opt.curve, opt.nthreads);
                 std::swap(a, scratch);
                 if (opt.progress)

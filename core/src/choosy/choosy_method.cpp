@@ -31,10 +31,11 @@ const Method& choosy_method()
 {
     static const Method m = copying_method<ChoosyOptions>("choosy", "choosy.md",
         "Castellanos & Williams: choosy sampling (use-count penalty keeps the sample's "
-        "histogram), isotropic by default, toroidal, with source maps",
+        "histogram), toroidal, with source maps; isotropic=1 for isotropic variants",
         "Castellanos & Williams choosy sampling of the current image: coarse to fine by "
         "Laplacian inversion, each sample pixel's score penalised by its use count (keeps the "
-        "sample's histogram), isotropic by default, toroidal. Each side of size must be a "
+        "sample's histogram), toroidal; the sample's orientation unless isotropic=1. Each side of "
+        "size must be a "
         "multiple of 2^(levels-1).",
         "texsyn data/samples/leaves_autumn.png --choosy:size=256x256 -o leaves_big.exr",
         "the sample's colour histogram kept exactly", choosy_synthesize, choosy_layout);
