@@ -83,7 +83,7 @@ int main(int argc, char* argv[])
         PlanarImage p;
         if (!texsyn::read_image(argv[i], file, error) || !planes_from_imagebuf(file, p, error)
             || !colors->convert(
-                p, colors->guess_colorspace(file.spec()), colors->scene_linear(), error)) {
+                p, colors->guess_colorspace(file.spec()).space, colors->scene_linear(), error)) {
             std::fprintf(stderr, "%s\n", error.c_str());
             return 1;
         }

@@ -2,6 +2,7 @@
 #include "command_line.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include <unistd.h>
@@ -25,7 +26,7 @@ namespace {
 const std::vector<std::string> k_with_argument = { "--seed", "--threads", "--colorconfig",
     "--iscolorspace", "--tocolorspace", "-d", "-o", "--recipe", "--max-memory" };
 const std::vector<std::string> k_flags
-    = { "-v", "--subbands", "--help", "-h", "--version", "--list-methods" };
+    = { "-v", "--subbands", "--help", "-h", "--version", "--list-methods", "--colorspaces" };
 
 bool listed(const std::vector<std::string>& list, const std::string& a)
 {
@@ -298,6 +299,14 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
                 print_methods();
                 return Early::Exit;
             }
+            if (a == "--colorspaces") {
+                // Of the config the run would use: a --colorconfig after it counts too.
+                for (size_t j = i + 1; j + 1 < args.size(); ++j)
+                    if (args[j] == "--colorconfig")
+                        state.colorconfig_path = args[j + 1];
+                std::printf("%s", state.colors().describe().c_str());
+                return Early::Exit;
+            }
             if (a == "-v")
                 state.verbose = true;
             if (a == "--subbands")
@@ -387,8 +396,8 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
     for (const std::string& option : colorspaces) {
         const std::string name = option.substr(option.find(' ') + 1);
         if (state.colors().resolve(name).empty())
-            throw CliError(
-                option.substr(0, option.find(' ')) + " : unknown colour space '" + name + "'");
+            throw CliError(option.substr(0, option.find(' ')) + " : "
+                + state.colors().unknown_colorspace(name));
     }
     return Early::Run;
 }

@@ -4,9 +4,25 @@
 #include "commands.h"
 #include "quiet_stderr.h"
 
+#include <cstdio>
+
 #include <texsyn/inputs.h>
 
 namespace texsyn::cli {
+
+namespace {
+
+// -v: the colour space `filename` was read as, why, and any doubt about it.
+void report_colorspace(const std::string& filename, const Sample& sample)
+{
+    std::fprintf(stderr, "texsyn: %s read as '%s': %s\n", filename.c_str(),
+        sample.colorspace.c_str(), sample.colorspace_reason.c_str());
+    if (!sample.colorspace_warning.empty())
+        std::fprintf(stderr, "texsyn WARNING: %s: %s\n", filename.c_str(),
+            sample.colorspace_warning.c_str());
+}
+
+} // namespace
 
 const ColorConfig& CliState::colors()
 {
@@ -44,6 +60,8 @@ void push_input(CliState& state, const std::string& filename)
     item.input_format = sample.file_format;
     item.input_colorspace = sample.colorspace;
     item.output_colorspace = state.pending_tocolorspace;
+    if (state.verbose)
+        report_colorspace(filename, sample);
     state.stack.push(std::move(item));
 }
 
@@ -64,6 +82,8 @@ void reinterpret_input(CliState& state, const std::string& colorspace)
             error.rfind("unknown colour space", 0) == 0 ? "--iscolorspace : " + error : error);
     item.buf = std::move(sample.pixels);
     item.input_colorspace = sample.colorspace;
+    if (state.verbose)
+        report_colorspace(item.name, sample);
 }
 
 } // namespace texsyn::cli

@@ -173,7 +173,7 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     // integer ones.
     if (inputs.empty()) {
         item.input_colorspace
-            = state.colors().guess_colorspace(OIIO::ImageSpec(1, 1, 3, OIIO::TypeUInt8));
+            = state.colors().guess_colorspace(OIIO::ImageSpec(1, 1, 3, OIIO::TypeUInt8)).space;
         item.input_format = OIIO::TypeUnknown;
         item.output_colorspace = state.pending_tocolorspace;
     } else {
@@ -200,6 +200,13 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
             from += (from.empty() ? " from " : ", ") + short_name(input);
         std::fprintf(stderr, "texsyn: %s %s%s in %.2f s\n", command.c_str(), opts.c_str(),
             from.c_str(), secs);
+        // An operation keeps its input's size unless told otherwise (oiiotool's habit).
+        if (const std::string given = options.value("size"); !inputs.empty()
+            && item.buf.initialized() && given.find_first_not_of("0x") == std::string::npos
+            && !given.empty())
+            std::fprintf(stderr, "texsyn: %s size=%dx%d: %s's size (size=WxH sets another)\n",
+                command.c_str(), item.buf.spec().width, item.buf.spec().height,
+                short_name(inputs[0]).c_str());
         if (!result.notes.empty())
             std::fprintf(stderr, "texsyn: %s %s\n", command.c_str(), result.notes.c_str());
     }

@@ -42,7 +42,7 @@ void write_image(CliState& state, const StackItem& item, const std::string& file
     if (space.empty())
         space = is_linear_type(type) ? cc.scene_linear() : item.input_colorspace;
     if (cc.resolve(space).empty())
-        throw CliError("--tocolorspace : unknown colour space '" + space + "'");
+        throw CliError("--tocolorspace : " + cc.unknown_colorspace(space));
     space = cc.resolve(space);
 
     std::string error;
@@ -56,16 +56,15 @@ void write_image(CliState& state, const StackItem& item, const std::string& file
         sample = OIIO::Filesystem::filename(item.file);
     if (!sample.empty())
         spec.attribute("synth:sample", sample);
-    spec.attribute("synth:colorspace", space);
+    cc.tag_colorspace(spec, space);
     spec.attribute("synth:commandline", state.command_line);
-    spec.attribute("oiio:ColorSpace", space);
     // Formats that drop unknown attributes (TIFF, JPEG) still keep the description.
     spec.attribute("ImageDescription",
         "texsyn " + std::string(version()) + " --"
             + std::string(spec.get_string_attribute("synth:method")) + ":"
             + std::string(spec.get_string_attribute("synth:options")) + " seed "
             + std::to_string(spec.get_int_attribute("synth:seed"))
-            + (sample.empty() ? "" : ", sample " + sample) + ", " + space);
+            + (sample.empty() ? "" : ", sample " + sample) + ", colorspace " + space);
 
     const std::string tmp = state.outputs.add(filename);
     bool ok;

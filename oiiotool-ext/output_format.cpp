@@ -79,7 +79,7 @@ bool is_linear_type(OIIO::TypeDesc type)
 bool stores_associated_alpha(const std::string& filename)
 {
     const std::string ext = extension(filename);
-    return ext == "exr" || ext == "sxr" || ext == "mxr";
+    return ext == "exr" || ext == "sxr" || ext == "mxr" || ext == "tx";
 }
 
 } // namespace texsyn::cli

@@ -22,8 +22,8 @@ OIIO::TypeDesc output_pixel_type(
 /// than in the input's encoding (integers).
 bool is_linear_type(OIIO::TypeDesc type);
 
-/// Whether `filename`'s format stores colour associated with alpha (OpenEXR does; PNG,
-/// TIFF and the others are written un-associated).
+/// Whether `filename`'s format stores colour associated with alpha (OpenEXR and .tx
+/// textures do, as renderers expect; PNG, TIFF and the others are written un-associated).
 bool stores_associated_alpha(const std::string& filename);
 
 } // namespace texsyn::cli

@@ -20,13 +20,16 @@ void write_volume_output(CliState& state, const std::string& filename)
     const std::string space
         = cc.resolve(img.output_colorspace.empty() ? cc.scene_linear() : img.output_colorspace);
     if (space.empty())
-        throw CliError("--tocolorspace : unknown colour space '" + img.output_colorspace + "'");
+        throw CliError("--tocolorspace : " + cc.unknown_colorspace(img.output_colorspace));
 
     PlanarVolume synthesized;
     std::string error;
     if (!volume_from_imagebuf(img.buf, synthesized, error))
         throw CliError("-o " + filename + " : " + error);
-    synthesized.attributes.attribute("synth:colorspace", space);
+    OIIO::ImageSpec tags;
+    cc.tag_colorspace(tags, space);
+    for (const OIIO::ParamValue& tag : tags.extra_attribs)
+        synthesized.attributes.add_or_replace(tag);
     synthesized.attributes.attribute("synth:commandline", state.command_line);
     if (space != cc.scene_linear()) {
         PlanarImage planes;

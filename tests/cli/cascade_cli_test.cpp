@@ -50,7 +50,8 @@ TEST_F(Cli, AGeneratorNamesNoSample)
     const OIIO::ImageSpec spec = read("gen.tif").spec();
     const std::string description = spec.get_string_attribute("ImageDescription");
     EXPECT_EQ(description.find("texsyn "), 0u) << description;
-    EXPECT_NE(description.find(" seed 1, sRGB - Texture"), std::string::npos) << description;
+    EXPECT_NE(description.find(" seed 1, colorspace sRGB - Texture"), std::string::npos)
+        << description;
     EXPECT_EQ(description.find("sample"), std::string::npos) << description;
     EXPECT_FALSE(spec.find_attribute("synth:sample"));
 }
@@ -188,9 +189,8 @@ TEST_F(Cli, CascadePresetWithAPalette)
     ASSERT_EQ(texsyn(look + ":ramp=none:palette=flat.png -d float -o b.exr").status, 0);
     EXPECT_EQ(pixel_hash(read("a.exr")), pixel_hash(read("b.exr")));
     EXPECT_NEAR(read("a.exr").getchannel(5, 5, 0, 0), 0.2158f, 2e-3);
-    const std::string reopen = "cd " + quote(dir.string()) + " && OIIO_LIBRARY_PATH="
-        + quote(TEXSYN_PLUGIN_DIR) + " oiiotool a.texsyn -d float -o again.exr";
-    ASSERT_EQ(std::system(reopen.c_str()), 0);
+    r = shell("oiiotool a.texsyn -d float -o again.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(pixel_hash(read("again.exr")), pixel_hash(read("a.exr")));
     r = texsyn("--seed 2 --cascade:size=32x32:preset=stone:palette=stucco.png:scale=2 -o c.exr");
     ASSERT_EQ(r.status, 0) << r.err;

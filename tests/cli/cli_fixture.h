@@ -69,10 +69,25 @@ protected:
         return std::string(TEXSYN_TEST_DATA) + "/" + name;
     }
 
+    // Runs the built tool with `args` in the test directory, `env` (NAME=value ...) set.
     CliRun texsyn(const std::string& args, const std::string& env = "")
     {
-        std::string cmd = "cd " + quote(dir.string()) + " && " + env + " " + quote(TEXSYN_EXE) + " "
-            + args + " > stdout.txt 2> stderr.txt";
+        return run_in_dir(env + " " + quote(TEXSYN_EXE) + " " + args);
+    }
+
+    // Runs the shell command `command` in the test directory: stock OIIO tools as
+    // installed, with texsyn's plugin on their search path.
+    CliRun shell(const std::string& command)
+    {
+        return run_in_dir(
+            "export OIIO_LIBRARY_PATH=" + quote(TEXSYN_PLUGIN_DIR) + " && " + command);
+    }
+
+    // Runs `command` in the test directory, capturing its exit status, stdout and stderr.
+    CliRun run_in_dir(const std::string& command)
+    {
+        std::string cmd
+            = "cd " + quote(dir.string()) + " && " + command + " > stdout.txt 2> stderr.txt";
         CliRun r;
         int rc = std::system(cmd.c_str());
         r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);

@@ -309,7 +309,8 @@ TEST_F(Cli, MalformedCommandsAndOptionsAreRefused)
     expect_failure("--pyramid -o out.exr",
         "texsyn ERROR: --pyramid : no current image (give an input file before it)");
     expect_failure("stucco.png --tocolorspace Nope --pyramid -o out.exr",
-        "texsyn ERROR: --tocolorspace : unknown colour space 'Nope'");
+        "texsyn ERROR: --tocolorspace : unknown colour space 'Nope' (known: Linear Rec.709 "
+        "(sRGB), sRGB - Texture, ACEScg, Raw, CIE-XYZ-D65; texsyn --colorspaces describes them)");
 }
 
 // Every command of the method registry reports an option out of its range the same way,

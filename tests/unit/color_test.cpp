@@ -14,6 +14,8 @@
 
 #include <unistd.h> // getpid
 
+#include <Eigen/Dense>
+
 #include <gtest/gtest.h>
 
 using namespace texsyn;
@@ -253,7 +255,7 @@ TEST_F(Ocio, BundledConfigLoadsAndResolves)
     EXPECT_TRUE(config->is_bundled());
     EXPECT_EQ(config->scene_linear(), "Linear Rec.709 (sRGB)");
     const std::vector<std::string> expected
-        = { "Linear Rec.709 (sRGB)", "sRGB - Texture", "ACEScg", "Raw" };
+        = { "Linear Rec.709 (sRGB)", "sRGB - Texture", "ACEScg", "Raw", "CIE-XYZ-D65" };
     EXPECT_EQ(config->colorspace_names(), expected);
     EXPECT_EQ(config->resolve("sRGB"), "sRGB - Texture");
     EXPECT_EQ(config->resolve("srgb_tx"), "sRGB - Texture");
@@ -365,8 +367,12 @@ TEST_F(Ocio, UnknownSpaceFailsWithoutChanges)
     std::string error;
     EXPECT_FALSE(config->convert(img, "sRGB", "NoSuchSpace", error));
     EXPECT_EQ(error,
-        "unknown colour space 'NoSuchSpace' (known: Linear Rec.709 (sRGB), "
-        "sRGB - Texture, ACEScg, Raw)");
+        "unknown colour space 'NoSuchSpace' (known: Linear Rec.709 (sRGB), sRGB - Texture, "
+        "ACEScg, Raw, CIE-XYZ-D65; texsyn --colorspaces describes them)");
+    // A near miss of a name or an alias is named.
+    EXPECT_EQ(config->unknown_colorspace("srgb-tx").rfind(
+                  "unknown colour space 'srgb-tx', did you mean 'srgb_tx'? (known: ", 0),
+        0u);
     for (size_t i = 0; i < 4; ++i)
         EXPECT_EQ(img.channels[1].data()[i], 0.5f);
 }
@@ -412,22 +418,107 @@ TEST_F(Ocio, EnvironmentVariableIsHonoured)
 TEST_F(Ocio, GuessColorspace)
 {
     OIIO::ImageSpec u8(8, 8, 3, OIIO::TypeDesc::UINT8);
-    EXPECT_EQ(config->guess_colorspace(u8), "sRGB - Texture");
+    EXPECT_EQ(config->guess_colorspace(u8).space, "sRGB - Texture");
     OIIO::ImageSpec u16(8, 8, 3, OIIO::TypeDesc::UINT16);
-    EXPECT_EQ(config->guess_colorspace(u16), "sRGB - Texture");
+    EXPECT_EQ(config->guess_colorspace(u16).space, "sRGB - Texture");
     OIIO::ImageSpec f32(8, 8, 3, OIIO::TypeDesc::FLOAT);
-    EXPECT_EQ(config->guess_colorspace(f32), "Linear Rec.709 (sRGB)");
+    EXPECT_EQ(config->guess_colorspace(f32).space, "Linear Rec.709 (sRGB)");
     OIIO::ImageSpec f16(8, 8, 4, OIIO::TypeDesc::HALF);
-    EXPECT_EQ(config->guess_colorspace(f16), "Linear Rec.709 (sRGB)");
+    EXPECT_EQ(config->guess_colorspace(f16).space, "Linear Rec.709 (sRGB)");
 
     u8.attribute("oiio:ColorSpace", "sRGB"); // what OIIO's PNG reader sets
-    EXPECT_EQ(config->guess_colorspace(u8), "sRGB - Texture");
+    EXPECT_EQ(config->guess_colorspace(u8).space, "sRGB - Texture");
     u8.attribute("oiio:ColorSpace", "NotInConfig");
-    EXPECT_EQ(config->guess_colorspace(u8), "sRGB - Texture");
+    EXPECT_EQ(config->guess_colorspace(u8).space, "sRGB - Texture");
     f32.attribute("oiio:ColorSpace", "Linear"); // what OIIO reads back from float EXRs
-    EXPECT_EQ(config->guess_colorspace(f32), "Linear Rec.709 (sRGB)");
+    EXPECT_EQ(config->guess_colorspace(f32).space, "Linear Rec.709 (sRGB)");
     f16.attribute("oiio:ColorSpace", "ACEScg");
-    EXPECT_EQ(config->guess_colorspace(f16), "ACEScg");
+    EXPECT_EQ(config->guess_colorspace(f16).space, "ACEScg");
     u16.attribute("oiio:ColorSpace", "Raw");
-    EXPECT_EQ(config->guess_colorspace(u16), "Raw");
+    EXPECT_EQ(config->guess_colorspace(u16).space, "Raw");
+}
+
+TEST_F(Ocio, GuessSaysWhyAndDoubtsGenericTags)
+{
+    OIIO::ImageSpec f32(8, 8, 3, OIIO::TypeDesc::FLOAT);
+    ColorConfig::Guess g = config->guess_colorspace(f32);
+    EXPECT_EQ(g.reason, "no colour tag: floating-point files are taken as scene-linear");
+    EXPECT_EQ(g.warning, "");
+    f32.attribute("oiio:ColorSpace", "Linear");
+    g = config->guess_colorspace(f32);
+    EXPECT_EQ(g.reason, "its oiio:ColorSpace tag 'Linear'");
+    EXPECT_EQ(g.warning.rfind("the tag 'Linear' is a generic name", 0), 0u) << g.warning;
+    f32.attribute("oiio:ColorSpace", "scene_linear"); // a role: as generic
+    EXPECT_NE(config->guess_colorspace(f32).warning, "");
+    f32.attribute("oiio:ColorSpace", "NotInConfig");
+    EXPECT_EQ(config->guess_colorspace(f32).reason,
+        "a tag 'NotInConfig' the config does not know: floating-point files are taken as "
+        "scene-linear");
+    // texsyn's own tags come first; the description stands in where the format keeps none.
+    f32.attribute("ImageDescription", "texsyn 0.1.0 --pyramid:size=8x8 seed 0, colorspace ACEScg");
+    g = config->guess_colorspace(f32);
+    EXPECT_EQ(g.space, "ACEScg");
+    EXPECT_EQ(g.reason, "its texsyn ImageDescription (the format keeps no tag)");
+    f32.attribute("synth:colorspace", "Raw");
+    EXPECT_EQ(config->guess_colorspace(f32).space, "Raw");
+    // Someone else's description is not read.
+    OIIO::ImageSpec u8(8, 8, 3, OIIO::TypeDesc::UINT8);
+    u8.attribute("ImageDescription", "scan, colorspace ACEScg");
+    EXPECT_EQ(config->guess_colorspace(u8).space, "sRGB - Texture");
+}
+
+TEST_F(Ocio, ChromaticitiesComeFromTheInterchangeRole)
+{
+    float xy[8];
+    ASSERT_TRUE(config->chromaticities("Linear Rec.709 (sRGB)", xy));
+    const float rec709[8] = { 0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f };
+    for (int i = 0; i < 8; ++i)
+        EXPECT_NEAR(xy[i], rec709[i], 1e-4f) << i;
+    ASSERT_TRUE(config->chromaticities("sRGB", xy)); // same primaries, other encoding
+    EXPECT_NEAR(xy[0], 0.64f, 1e-4f);
+    // ACEScg: AP1 primaries, Bradford-adapted from their D60 white to D65 as the config
+    // converts them (red stays near AP1's 0.713, 0.293).
+    ASSERT_TRUE(config->chromaticities("ACEScg", xy));
+    EXPECT_NEAR(xy[0], 0.713f, 2e-3f);
+    EXPECT_NEAR(xy[6], 0.3127f, 1e-4f);
+    EXPECT_NEAR(xy[7], 0.3290f, 1e-4f);
+    // A reader that builds its RGB -> XYZ matrix from them sees the colours the config
+    // makes: ACEScg -> linear Rec.709 by the config, then Rec.709's own matrix.
+    Eigen::Matrix3d primaries;
+    for (int i = 0; i < 3; ++i)
+        primaries.col(i) << xy[2 * i] / xy[2 * i + 1], 1.0,
+            (1.0 - xy[2 * i] - xy[2 * i + 1]) / xy[2 * i + 1];
+    const Eigen::Vector3d white(xy[6] / xy[7], 1.0, (1.0 - xy[6] - xy[7]) / xy[7]);
+    const Eigen::Vector3d scale = primaries.colPivHouseholderQr().solve(white);
+    const Eigen::Matrix3d to_xyz = primaries * scale.asDiagonal();
+    Eigen::Matrix3d rec709_to_xyz;
+    rec709_to_xyz << 0.4123908, 0.3575843, 0.1804808, 0.2126390, 0.7151687, 0.0721923, 0.0193308,
+        0.1191948, 0.9505322;
+    PlanarImage px = make_image(1, 1, 3);
+    const Eigen::Vector3d cg(0.2, 0.5, 0.8);
+    for (int c = 0; c < 3; ++c)
+        px.channels[size_t(c)].data()[0] = float(cg[c]);
+    std::string error;
+    ASSERT_TRUE(config->convert(px, "ACEScg", "Linear Rec.709 (sRGB)", error)) << error;
+    const Eigen::Vector3d lin(
+        px.channels[0].data()[0], px.channels[1].data()[0], px.channels[2].data()[0]);
+    EXPECT_LT((to_xyz * cg - rec709_to_xyz * lin).norm(), 1e-4);
+    EXPECT_FALSE(config->chromaticities("Raw", xy));
+    EXPECT_FALSE(config->chromaticities("NoSuchSpace", xy));
+}
+
+TEST_F(Ocio, TagsNameTheSpaceForEveryFormat)
+{
+    OIIO::ImageSpec spec(8, 8, 3, OIIO::TypeDesc::UINT8);
+    config->tag_colorspace(spec, "sRGB - Texture");
+    EXPECT_EQ(spec.get_string_attribute("oiio:ColorSpace"), "sRGB - Texture");
+    EXPECT_EQ(spec.get_string_attribute("synth:colorspace"), "sRGB - Texture");
+    EXPECT_EQ(spec.get_int_attribute("Exif:ColorSpace"), 1);
+    EXPECT_NE(spec.find_attribute("chromaticities"), nullptr);
+    config->tag_colorspace(spec, "ACEScg");
+    EXPECT_EQ(spec.get_int_attribute("Exif:ColorSpace"), 65535); // TIFF: "uncalibrated"
+    config->tag_colorspace(spec, "Raw");
+    EXPECT_EQ(spec.get_string_attribute("oiio:ColorSpace"), "Raw");
+    EXPECT_EQ(spec.find_attribute("Exif:ColorSpace"), nullptr);
+    EXPECT_EQ(spec.find_attribute("chromaticities"), nullptr);
 }

@@ -52,6 +52,13 @@ public:
     bool is_data(const std::string& name) const;
     /// All colour space names, in config order.
     std::vector<std::string> colorspace_names() const;
+    /// "unknown colour space 'NAME', did you mean 'X'? (known: a, b, …; …)": the message
+    /// for a name the config does not know, with the nearest known name or alias if one
+    /// is near.
+    std::string unknown_colorspace(const std::string& name) const;
+    /// The config's colour spaces (name, aliases, family, encoding, data or not) and roles,
+    /// one per line, as `texsyn --colorspaces` prints them.
+    std::string describe() const;
 
     /// Converts the colour channels of `image` (1: grey, >= 3: the first three are RGB;
     /// alpha and other channels are untouched) from space `from` to space `to`, in place.
@@ -68,11 +75,35 @@ public:
     bool convert_image(const OIIO::ImageBuf& src, const std::string& from, const std::string& to,
         bool associate, OIIO::ImageBuf& dst, std::string& error, int nthreads = 0) const;
 
-    /// The colour space an image file's pixels are in: `oiio:ColorSpace` from `spec` if the
-    /// config knows it, else `fallback` ("" when unknown). 8- and 16-bit integer files
-    /// without a tag are taken as sRGB-encoded ("sRGB - Texture"), float files as
+    /// The CIE xy chromaticities of space `name`'s red, green and blue primaries and white
+    /// (OpenEXR's "chromaticities": rx ry gx gy bx by wx wy), through the config's
+    /// cie_xyz_d65_interchange role (white points adapted to D65, as that role is). False
+    /// if the config has no such role, or for a data space.
+    bool chromaticities(const std::string& name, float xy[8]) const;
+
+    /// Tags `spec`, an image about to be written in space `name` (canonical), so that
+    /// texsyn and OIIO tools read the file back in that space: oiio:ColorSpace and
+    /// synth:colorspace (OpenEXR and PNG keep them), Exif:ColorSpace (1 for sRGB-encoded
+    /// spaces, 65535 "uncalibrated" for others: what TIFF keeps; OIIO reads 1 as sRGB),
+    /// and "chromaticities" where the config gives them (OpenEXR keeps them).
+    void tag_colorspace(OIIO::ImageSpec& spec, const std::string& name) const;
+
+    /// The colour space an image file's pixels are in, and why.
+    struct Guess {
+        std::string space;   ///< canonical name; "" if nothing tells
+        std::string reason;  ///< in words, e.g. "its synth:colorspace tag"
+        std::string warning; ///< "" or why the answer may be wrong (a generic tag)
+    };
+    /// The colour space of an image file from its `spec`, first of: texsyn's own tag
+    /// synth:colorspace; texsyn's ImageDescription ("…, colorspace NAME", for formats that
+    /// keep no tag, as TIFF); `oiio:ColorSpace` if the config knows it (a generic name such
+    /// as OIIO's "Linear" for every OpenEXR file: scene_linear, with a warning); else by
+    /// pixel type: 8- and 16-bit integers sRGB-encoded ("sRGB - Texture"), floating point
     /// scene_linear — what OIIO assumes too.
-    std::string guess_colorspace(const OIIO::ImageSpec& spec) const;
+    Guess guess_colorspace(const OIIO::ImageSpec& spec) const;
+    /// Whether `name` is a generic colour-space name that says nothing of primaries:
+    /// "linear" (OIIO's tag for every OpenEXR file) or a role name of the config.
+    bool is_generic_name(const std::string& name) const;
 
 private:
     struct Impl;

@@ -28,8 +28,10 @@ struct Sample {
     /// An image: the file's values as read, float (for read_sample's `colorspace` to be
     /// changed afterwards: relinearize_sample).
     OIIO::ImageBuf file_pixels;
-    OIIO::TypeDesc file_format; ///< the file's pixel type (an analysis: its sample's)
-    std::string colorspace;     ///< the space the pixels were converted from
+    OIIO::TypeDesc file_format;     ///< the file's pixel type (an analysis: its sample's)
+    std::string colorspace;         ///< the space the pixels were converted from
+    std::string colorspace_reason;  ///< why that space, in words (ColorConfig::Guess)
+    std::string colorspace_warning; ///< "" or why that space may be wrong
     std::shared_ptr<const TextureStatistics> analysis; ///< set for an analysis file
 };
 

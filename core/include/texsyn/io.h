@@ -72,7 +72,9 @@ bool same_file(const std::string& a, const std::string& b);
 
 /// Writes `image` to `path` (no temporary: for a path that is itself one) and checks the
 /// result as write_image_atomic does; on failure removes `path` and fails (false, "PATH:
-/// cannot write (reason)").
+/// cannot write (reason)"). A *.tx path gets a texture for renderers, made by OIIO's own
+/// texture maker (ImageBufAlgo::make_texture): tiled 64x64, MIP-mapped, zip-compressed,
+/// with the image's "wrapmodes" (black if it has none) and metadata.
 bool write_image_verified(const OIIO::ImageBuf& image, const std::string& path,
     OIIO::TypeDesc format, std::string& error);
 

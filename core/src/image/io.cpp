@@ -7,7 +7,9 @@
 #include <system_error>
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
 
 #include <texsyn/memory.h>
 
@@ -167,9 +169,27 @@ bool write_image_verified(
     const OIIO::ImageBuf& image, const std::string& path, OIIO::TypeDesc format, std::string& error)
 {
     std::string reason;
-    if (!image.write(path, format))
-        reason = one_line(image.geterror());
-    else if (sync_written_file(path, reason) && verify_image_file(path, image.spec(), reason))
+    bool written;
+    if (OIIO::Strutil::iends_with(path, ".tx")) {
+        // A texture for renderers: tiled, MIP-mapped by OIIO's own texture maker, wrapping
+        // as the image says (a synthesis that tiles: periodic).
+        OIIO::ImageSpec config;
+        config.set_format(format == OIIO::TypeUnknown ? image.spec().format : format);
+        config.tile_width = config.tile_height = 64;
+        config.tile_depth = 1;
+        config.attribute("compression", "zip");
+        config.attribute(
+            "wrapmodes", image.spec().get_string_attribute("wrapmodes", "black,black"));
+        written = OIIO::ImageBufAlgo::make_texture(
+            OIIO::ImageBufAlgo::MakeTxTexture, image, path, config);
+        if (!written)
+            reason = one_line(OIIO::geterror());
+    } else {
+        written = image.write(path, format);
+        if (!written)
+            reason = one_line(image.geterror());
+    }
+    if (written && sync_written_file(path, reason) && verify_image_file(path, image.spec(), reason))
         return true;
     std::error_code ec;
     fs::remove(path, ec);

@@ -29,6 +29,7 @@ bool read_sample(const std::string& filename, const ColorConfig& colors,
             return false;
         }
         s.colorspace = stats->colorspace;
+        s.colorspace_reason = "the colour space its sample was read in";
         s.file_format
             = stats->sample_format.empty() ? OIIO::TypeFloat : OIIO::TypeDesc(stats->sample_format);
         s.analysis = std::move(stats);
@@ -41,9 +42,19 @@ bool read_sample(const std::string& filename, const ColorConfig& colors,
     if (!read_image(filename, s.file_pixels, error, &native, sample_read_copies))
         return false;
     s.file_format = native.format;
-    if (!relinearize_sample(s, colors,
-            colorspace.empty() ? colors.guess_colorspace(native) : colorspace, error, nthreads))
+    ColorConfig::Guess guess { colorspace, "as asked (--iscolorspace)", "" };
+    if (colorspace.empty()) {
+        guess = colors.guess_colorspace(native);
+        if (guess.space.empty()) {
+            error = filename + ": unknown colour space (" + guess.reason
+                + "); name it with --iscolorspace";
+            return false;
+        }
+    }
+    if (!relinearize_sample(s, colors, guess.space, error, nthreads))
         return false;
+    s.colorspace_reason = guess.reason;
+    s.colorspace_warning = guess.warning;
     sample = std::move(s);
     return true;
 }
@@ -57,7 +68,7 @@ bool relinearize_sample(Sample& sample, const ColorConfig& colors, const std::st
     }
     const std::string space = colors.resolve(colorspace);
     if (space.empty()) {
-        error = "unknown colour space '" + colorspace + "'";
+        error = colors.unknown_colorspace(colorspace);
         return false;
     }
     // Kept un-associated: colour under zero alpha must survive to the output.
@@ -67,6 +78,8 @@ bool relinearize_sample(Sample& sample, const ColorConfig& colors, const std::st
         return false;
     }
     sample.colorspace = space;
+    sample.colorspace_reason = "as asked (--iscolorspace)";
+    sample.colorspace_warning.clear();
     return true;
 }
 

@@ -87,9 +87,7 @@ bool prepare(const Recipe& recipe, Prepared& p, std::string& error)
         named.emplace_back("iscolorspace", space);
     for (const auto& [key, space] : named)
         if (!space.empty() && p.colors->resolve(space).empty()) {
-            error = option_error(key, space,
-                "unknown colour space (known: "
-                    + OIIO::Strutil::join(p.colors->colorspace_names(), ", ") + ")");
+            error = option_error(key, space, p.colors->unknown_colorspace(space));
             return false;
         }
     return true;
@@ -125,8 +123,7 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
     if (!convert_result(
             *p.colors, result.image, p.to, method.output == MethodOutput::Volume, dst, error))
         return false;
-    dst.specmod().attribute("synth:colorspace", p.to);
-    dst.specmod().attribute("oiio:ColorSpace", p.to);
+    p.colors->tag_colorspace(dst.specmod(), p.to);
     if (settings.subbands)
         *subbands = std::move(result.subbands);
     return true;
@@ -191,8 +188,7 @@ bool recipe_spec(const Recipe& recipe, OIIO::ImageSpec& spec, std::string& error
         spec.attribute("synth:sample", names);
     if (layout.tiles)
         spec.attribute("wrapmodes", "periodic,periodic");
-    spec.attribute("synth:colorspace", p.to);
-    spec.attribute("oiio:ColorSpace", p.to);
+    p.colors->tag_colorspace(spec, p.to);
     return true;
 }
 
