@@ -109,4 +109,12 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
 /// missing or unreadable sample or input file, a sample beyond the memory limit.
 bool recipe_spec(const Recipe& recipe, OIIO::ImageSpec& spec, std::string& error);
 
+/// run_recipe()'s result as the subimages of an image file, as the OIIO plugin serves
+/// them: the synthesis ("synth"), or a volume's z slices ("z0000", …: volume_exr_part_name),
+/// then with recipe.subbands the subbands (named as in subbands.md, colour associated
+/// with alpha); each a float image with that "oiio:subimagename" and the synthesis's
+/// synth:* metadata, all with one display window (the largest part's).
+/// Fails (false, `error`) as run_recipe() does.
+bool recipe_images(const Recipe& recipe, std::vector<OIIO::ImageBuf>& images, std::string& error);
+
 } // namespace texsyn
