@@ -2,7 +2,7 @@
 // texsyn.imageio.so: an OIIO ImageInput that opens synthesis recipes (*.texsyn) as images,
 // so that stock oiiotool, iinfo, maketx and any OIIO application can use them. Parsing and
 // dispatch only: open() answers with libtexsyn's recipe_spec(), and the recipe is run by
-// recipe_images() on the first read of pixels.
+// recipe_images() — or read from the $TEXSYN_CACHE result cache — on the first read of pixels.
 //
 // The plugin does not claim "procedural": stock oiiotool 2.4.7 crashes when a procedural
 // plugin accepts a name in valid_file() and then fails open().
@@ -169,7 +169,8 @@ private:
     }
 
     // OIIO tools open a file more than once (oiiotool: for its spec, then for its pixels),
-    // and a synthesis is expensive, so the last two results are kept, keyed by the name as
+    // and a synthesis is expensive (even a read from $TEXSYN_CACHE is not free: docs/cache.md),
+    // so the last two results are kept in memory, keyed by the name as
     // given, the working directory (for relative paths) and the modification times and
     // sizes of the recipe file, the samples, the files its options read and the colour
     // config (so edits are seen).

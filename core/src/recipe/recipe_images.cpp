@@ -1,16 +1,23 @@
 // SPDX-License-Identifier: Apache-2.0
-// A recipe's result as the subimages of an image file.
+// A recipe's result as the subimages of an image file, through the result cache when
+// $TEXSYN_CACHE asks for one.
 #include <texsyn/recipe.h>
 
 #include <algorithm>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/strutil.h>
 
 #include <texsyn/volume.h>
 
+#include "result_cache_pvt.h"
+
 namespace texsyn {
 
-bool recipe_images(const Recipe& recipe, std::vector<OIIO::ImageBuf>& images, std::string& error)
+namespace {
+
+// The synthesis: run_recipe(), a volume cut into its z slices, the subbands after it.
+bool make_images(const Recipe& recipe, std::vector<OIIO::ImageBuf>& images, std::string& error)
 {
     OIIO::ImageBuf result;
     std::vector<NamedImage> bands;
@@ -44,8 +51,39 @@ bool recipe_images(const Recipe& recipe, std::vector<OIIO::ImageBuf>& images, st
     for (OIIO::ImageBuf& img : images) {
         img.specmod().full_width = full_w;
         img.specmod().full_height = full_h;
+        img.specmod() = detail::part_spec(img.spec());
     }
     return true;
+}
+
+} // namespace
+
+bool recipe_images(const Recipe& recipe, std::vector<OIIO::ImageBuf>& images, std::string& error)
+{
+    std::string folder, key, why;
+    bool writable = false;
+    OIIO::ImageSpec spec;
+    if (!detail::result_cache_folder(folder, writable) || !recipe_spec(recipe, spec, why))
+        return make_images(recipe, images, error);
+    std::string label = recipe.method;
+    for (const std::string& sample : recipe.samples)
+        label += " " + OIIO::Filesystem::filename(sample);
+    if (!detail::recipe_cache_key(recipe, key, why)) {
+        detail::cache_note("not used for " + label + ": " + why);
+        return make_images(recipe, images, error);
+    }
+    detail::EntryLayout layout;
+    layout.leading = std::max(spec.depth, 1);
+    layout.width = spec.width;
+    layout.height = spec.height;
+    layout.channelnames = spec.channelnames;
+    layout.more = recipe.subbands;
+    return detail::cached_images(
+        folder, writable, key, layout, label,
+        [&](std::vector<OIIO::ImageBuf>& made, std::string& err) {
+            return make_images(recipe, made, err);
+        },
+        images, error);
 }
 
 } // namespace texsyn
