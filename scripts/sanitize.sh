@@ -32,18 +32,19 @@ case "$kind" in
   address-ci)
     # The CI subset: every parser of untrusted input (options, recipes, analysis files,
     # images), the write path and its fault cases, the plugin through stock oiiotool,
-    # iinfo, maketx and Python, the pyramid method end to end, and the fuzz corpora.
+    # iinfo, maketx and Python (and its result cache), the pyramid method end to end, and
+    # the fuzz corpora.
     kind=address
     dir=build-asan
     sanitize=address,undefined
     fuzz=ON
     tests="image io_safety options methods recipe stats pyramid histogram"
-    tests="$tests robustness_cli plugin cli"
+    tests="$tests robustness_cli plugin result_cache cli"
     targets="texsyn_cli texsyn_imageio fuzz_option_strings fuzz_recipe fuzz_analysis_file"
     targets="$targets fuzz_image_analysis $(printf '%s_test ' $tests)"
     regex="^(Image|IoSafety|MemoryLimit|Options|Methods|Recipe|AnalysisFile[A-Za-z]*"
     regex="$regex|Laplacian|Steerable|Pyramid|PeriodicComponent|Histogram|Barycenter"
-    regex="$regex|Robustness|Plugin|Cli)\\.|^fuzz_"
+    regex="$regex|Robustness|Plugin|ResultCache|Cli)\\.|^fuzz_"
     ;;
   thread)
     dir=build-tsan

@@ -2,14 +2,13 @@
 // texsyn.imageio.so: an OIIO ImageInput that opens synthesis recipes (*.texsyn) as images,
 // so that stock oiiotool, iinfo, maketx and any OIIO application can use them. Parsing and
 // dispatch only: open() answers with libtexsyn's recipe_spec(), and the recipe is run by
-// run_recipe() on the first read of pixels.
+// recipe_images() — or read from the $TEXSYN_CACHE result cache — on the first read of pixels.
 //
 // The plugin does not claim "procedural": stock oiiotool 2.4.7 crashes when a procedural
 // plugin accepts a name in valid_file() and then fails open().
 // Without it, a bad recipe fails cleanly with the plugin's message. Samples are read with
 // their own ImageInput (texsyn::read_image): re-entering OIIO's shared ImageCache while it
 // opens this file made oiiotool abort.
-#include <algorithm>
 #include <deque>
 #include <filesystem>
 #include <memory>
@@ -170,7 +169,8 @@ private:
     }
 
     // OIIO tools open a file more than once (oiiotool: for its spec, then for its pixels),
-    // and a synthesis is expensive, so the last two results are kept, keyed by the name as
+    // and a synthesis is expensive (even a read from $TEXSYN_CACHE is not free: docs/cache.md),
+    // so the last two results are kept in memory, keyed by the name as
     // given, the working directory (for relative paths) and the modification times and
     // sizes of the recipe file, the samples, the files its options read and the colour
     // config (so edits are seen).
@@ -205,41 +205,9 @@ private:
                 if (entry.first == key)
                     return entry.second;
         }
-        auto images = std::make_shared<Images>(1);
-        std::vector<texsyn::NamedImage> bands;
-        if (!texsyn::run_recipe(recipe, (*images)[0], &bands, error))
+        auto images = std::make_shared<Images>();
+        if (!texsyn::recipe_images(recipe, *images, error))
             return nullptr;
-        if (const int depth = (*images)[0].spec().depth; depth > 1) {
-            // A volume: its z slices, named as in the slice EXR (volume.h).
-            const ImageBuf volume = std::move((*images)[0]);
-            images->clear();
-            for (int z = 0; z < depth; ++z) {
-                images->push_back(texsyn::volume_slice(volume, z));
-                images->back().specmod().attribute(
-                    "oiio:subimagename", texsyn::volume_exr_part_name(z, depth));
-            }
-        } else {
-            (*images)[0].specmod().attribute("oiio:subimagename", "synth");
-        }
-        for (texsyn::NamedImage& band : bands) {
-            ImageBuf buf;
-            texsyn::imagebuf_from_planes(band.image, buf);
-            buf.specmod().attribute("oiio:subimagename", band.name);
-            for (const ParamValue& p : (*images)[0].spec().extra_attribs)
-                if (Strutil::starts_with(p.name(), "synth:"))
-                    buf.specmod().attribute(p.name(), p.type(), p.data());
-            images->push_back(std::move(buf));
-        }
-        // One display window for all parts, so that they can be written as one OpenEXR.
-        int full_w = 0, full_h = 0;
-        for (const ImageBuf& img : *images) {
-            full_w = std::max(full_w, img.spec().width);
-            full_h = std::max(full_h, img.spec().height);
-        }
-        for (ImageBuf& img : *images) {
-            img.specmod().full_width = full_w;
-            img.specmod().full_height = full_h;
-        }
         if (!cacheable)
             return images;
         std::lock_guard<std::mutex> lock(mutex);

@@ -10,7 +10,7 @@ export OIIO_LIBRARY_PATH="$plugins"
 rm -rf "$work" && mkdir -p "$work/bin"
 ln -s "$texsyn" "$work/bin/texsyn"
 export PATH="$work/bin:$PATH"
-unset OCIO
+unset OCIO TEXSYN_CACHE TEXSYN_CACHE_VERBOSE  # docs/cache.md sets them where it shows them
 cd "$work"
 cp "$repo/data/samples/rust.png" rust.png
 cp "$repo/data/samples/marble_pink.png" marble.png

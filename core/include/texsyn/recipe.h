@@ -109,4 +109,20 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
 /// missing or unreadable sample or input file, a sample beyond the memory limit.
 bool recipe_spec(const Recipe& recipe, OIIO::ImageSpec& spec, std::string& error);
 
+/// run_recipe()'s result as the subimages of an image file, as the OIIO plugin serves
+/// them: the synthesis ("synth"), or a volume's z slices ("z0000", …: volume_exr_part_name),
+/// then with recipe.subbands the subbands (named as in subbands.md, colour associated
+/// with alpha); each a float image with that "oiio:subimagename", the synthesis's synth:*
+/// metadata and no other, all with one display window (the largest part's).
+/// With $TEXSYN_CACHE naming a folder (docs/cache.md) the result comes from the on-disk
+/// cache when it holds it intact, the same pixels bit for bit; else it is synthesized —
+/// once for all the processes and threads that ask for it at the same time: the others
+/// wait, then read it — and stored. The cache never makes this fail: where it cannot be
+/// used (the folder cannot be made, an entry is damaged, a disk is full) a one-line
+/// warning goes to stderr, once per process, and the result is synthesized.
+/// $TEXSYN_CACHE_VERBOSE=1 writes a line per lookup to stderr ("texsyn cache: hit KEY
+/// (pyramid rust.png)", "miss …, synthesizing", "stored KEY"). Fails (false, `error`) as
+/// run_recipe() does.
+bool recipe_images(const Recipe& recipe, std::vector<OIIO::ImageBuf>& images, std::string& error);
+
 } // namespace texsyn
