@@ -2,6 +2,8 @@
 #include <texsyn/image.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <new>
 
 #include "planar_pvt.h"
@@ -143,6 +145,36 @@ const float* contiguous_float_pixels(const OIIO::ImageBuf& buf)
         || buf.pixel_stride() != pixel || buf.scanline_stride() != pixel * spec.width)
         return nullptr;
     return static_cast<const float*>(buf.localpixels());
+}
+
+bool copy_without_planes(const OIIO::ImageBuf& src, OIIO::ImageBuf& dst)
+{
+    const OIIO::ImageSpec& spec = src.spec();
+    const int nc = spec.nchannels;
+    const float* pixels = contiguous_float_pixels(src);
+    if (!pixels || src.has_error() || spec.width < 1 || spec.height < 1 || nc < 1 || spec.depth > 1
+        || int(spec.channelnames.size()) != nc
+        || (spec.alpha_channel >= 1 && spec.alpha_channel < nc))
+        return false;
+    const size_t n = size_t(spec.width) * size_t(spec.height) * size_t(nc);
+    // All exponent bits set is Inf or NaN; or-ing a flag per value keeps the loop vectorised.
+    uint32_t not_finite = 0;
+    for (size_t i = 0; i < n; ++i) {
+        uint32_t bits;
+        std::memcpy(&bits, pixels + i, sizeof bits);
+        not_finite |= uint32_t((bits & 0x7f800000u) == 0x7f800000u);
+    }
+    if (not_finite)
+        return false;
+    OIIO::ImageSpec out(spec.width, spec.height, nc, OIIO::TypeFloat);
+    out.channelnames = spec.channelnames;
+    out.alpha_channel = -1;
+    OIIO::ImageBuf result(out, OIIO::InitializePixels::No);
+    if (!result.localpixels())
+        throw std::bad_alloc();
+    std::memcpy(result.localpixels(), pixels, n * sizeof(float));
+    dst = std::move(result);
+    return true;
 }
 
 } // namespace texsyn
