@@ -167,9 +167,7 @@ bool write_image_verified(
     const OIIO::ImageBuf& image, const std::string& path, OIIO::TypeDesc format, std::string& error)
 {
     std::string reason;
-    if (!image.write(path, format))
-        reason = one_line(image.geterror());
-    else if (sync_written_file(path, reason) && verify_image_file(path, image.spec(), reason))
+    if (write_image_checked(image, path, format, reason))
         return true;
     std::error_code ec;
     fs::remove(path, ec);
