@@ -100,6 +100,7 @@ TEST_F(Robustness, AFullDiskFailsEveryWriterCleanly)
         { pyramid + "-d float -o out.exr", "-o out.exr : cannot write (" },
         { pyramid + "--subbands -d float -o bands.exr", "-o bands.exr : cannot write (" },
         { pyramid + "-o out.jpg", "-o out.jpg : " },
+        { pyramid + "-o out.sgi", "-o out.sgi : cannot write (" }, // written by OIIO, read back
         { "--cascade:size=256x256 -o cascade.png", "-o cascade.png : cannot write (" },
         { "stucco.png --analyze -o a.tsa", "-o a.tsa : cannot write the analysis file (" },
         { "stucco.png --solid:size=32x32x32:iterations=1 -o v.vdb", "-o v.vdb : cannot write (" },
@@ -124,8 +125,8 @@ TEST_F(Robustness, AFullDiskFailsEveryWriterCleanly)
 TEST_F(Robustness, TheWriteChecksAcceptEveryGoodFile)
 {
     const std::string pyramid = "stucco.png --pyramid:size=64x64:iterations=1 ";
-    for (const std::string out :
-        { "out.png", "out.tga", "out.tif", "out.jpg", "out.exr", "out.bmp", "out.tx", "out.hdr" }) {
+    for (const std::string out : { "out.png", "out.tga", "out.tif", "out.jpg", "out.exr", "out.bmp",
+             "out.tx", "out.hdr", "out.sgi" }) {
         const CliRun r = texsyn(pyramid + "-o " + out);
         EXPECT_EQ(r.status, 0) << out << ": " << r.err;
         EXPECT_TRUE(fs::exists(dir / out)) << out;
@@ -133,7 +134,7 @@ TEST_F(Robustness, TheWriteChecksAcceptEveryGoodFile)
     EXPECT_EQ(texsyn("stucco.png --solid:size=16x16x16:iterations=1 -o v.vdb").status, 0);
     EXPECT_EQ(texsyn("stucco.png --analyze -o a.tsa").status, 0);
     expect_only({ "stucco.png", "out.png", "out.tga", "out.tif", "out.jpg", "out.exr", "out.bmp",
-                    "out.tx", "out.hdr", "v.vdb", "a.tsa" },
+                    "out.tx", "out.hdr", "out.sgi", "v.vdb", "a.tsa" },
         "good writes");
 }
 

@@ -9,8 +9,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
+#include <utility>
 
 #include <unistd.h> // getpid
 
@@ -358,6 +360,79 @@ TEST_F(Ocio, DataAndIdentityAreNoOps)
         EXPECT_EQ(0,
             std::memcmp(img.channels[size_t(c)].data(), original.channels[size_t(c)].data(),
                 4 * sizeof(float)));
+}
+
+namespace {
+
+// convert_image() as the planes make it: the slow oracle of its copy between one space.
+bool convert_image_through_planes(const ColorConfig& config, const OIIO::ImageBuf& src,
+    const std::string& from, const std::string& to, bool associate, OIIO::ImageBuf& dst,
+    std::string& error)
+{
+    PlanarImage planes;
+    if (!planes_from_imagebuf(src, planes, error) || !config.convert(planes, from, to, error))
+        return false;
+    imagebuf_from_planes(planes, dst, associate);
+    for (const OIIO::ParamValue& p : src.spec().extra_attribs)
+        if (p.name() != "oiio:UnassociatedAlpha")
+            dst.specmod().attribute(p.name(), p.type(), p.data());
+    return true;
+}
+
+} // namespace
+
+// Between one space (or to or from data) convert_image copies what it can instead of going
+// through planes: the results are the planes' bit for bit, spec and metadata included.
+TEST_F(Ocio, ImageConversionWithinOneSpaceIsThePlanesRoundTrip)
+{
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> value(-2.0f, 2.0f);
+    auto image = [&](int nchannels, int alpha, OIIO::TypeDesc type) {
+        OIIO::ImageSpec spec(37, 23, nchannels, type);
+        spec.x = 5;
+        spec.y = -3;
+        spec.alpha_channel = alpha;
+        spec.attribute("synth:method", "test");
+        OIIO::ImageBuf buf(spec);
+        std::vector<float> px(size_t(37 * 23 * nchannels));
+        for (float& v : px)
+            v = value(rng);
+        px[0] = -0.0f;
+        px[1] = 1e-40f; // denormal
+        buf.set_pixels(buf.roi(), OIIO::TypeFloat, px.data());
+        return buf;
+    };
+    const OIIO::ImageBuf rgb = image(3, -1, OIIO::TypeFloat), rgba = image(4, 3, OIIO::TypeFloat),
+                         bytes = image(3, -1, OIIO::TypeUInt8);
+    OIIO::ImageBuf inf = image(3, -1, OIIO::TypeFloat);
+    const float infinity[3] = { 0.5f, 0.5f, std::numeric_limits<float>::infinity() };
+    inf.setpixel(11, 7, infinity);
+    const std::vector<std::pair<std::string, std::string>> spaces
+        = { { "scene_linear", "Linear Rec.709 (sRGB)" }, { "Raw", "ACEScg" },
+              { "sRGB", "raw_data" }, { "sRGB", "ACEScg" } };
+    for (const OIIO::ImageBuf* src : { &rgb, &rgba, &bytes, &std::as_const(inf) })
+        for (const auto& [from, to] : spaces)
+            for (bool associate : { true, false }) {
+                OIIO::ImageBuf got, want;
+                std::string got_error, want_error;
+                const bool ok = config->convert_image(*src, from, to, associate, got, got_error);
+                ASSERT_EQ(ok,
+                    convert_image_through_planes(
+                        *config, *src, from, to, associate, want, want_error));
+                EXPECT_EQ(got_error, want_error);
+                if (!ok)
+                    continue;
+                EXPECT_EQ(got.spec().serialize(OIIO::ImageSpec::SerialText),
+                    want.spec().serialize(OIIO::ImageSpec::SerialText));
+                ASSERT_EQ(got.spec().image_bytes(), want.spec().image_bytes());
+                EXPECT_EQ(
+                    0, std::memcmp(got.localpixels(), want.localpixels(), got.spec().image_bytes()))
+                    << from << " -> " << to << ", " << src->spec().nchannels << " channels";
+            }
+    OIIO::ImageBuf out;
+    std::string error;
+    EXPECT_FALSE(config->convert_image(inf, "linear", "linear", true, out, error));
+    EXPECT_EQ(error, "pixel (11, 7) channel B is infinite; texsyn needs finite pixel values");
 }
 
 TEST_F(Ocio, UnknownSpaceFailsWithoutChanges)

@@ -107,6 +107,31 @@ TEST_F(IoSafety, TruncatedImagesDoNotVerifyAndWholeOnesDo)
     }
 }
 
+// Images are encoded in memory and their bytes written with checked write() calls: the
+// files are those OIIO writes itself. (SGI, which OIIO cannot write to memory, is written
+// by OIIO and read back: AFullDiskFailsEveryWriterCleanly.)
+TEST_F(IoSafety, CheckedWritesGiveTheFilesOiioWrites)
+{
+    OIIO::ImageBuf image = noise_image(64, 48);
+    image.specmod().attribute("DateTime", "2026:01:01 00:00:00"); // else the time of writing
+    auto bytes_of = [](const fs::path& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    for (const std::string ext : { ".exr", ".png", ".tif", ".tga", ".bmp", ".jpg", ".hdr" }) {
+        const fs::path ours = dir / ("ours" + ext), oiio = dir / ("oiio" + ext);
+        const OIIO::TypeDesc type = ext == ".exr" ? OIIO::TypeHalf
+            : ext == ".hdr"                       ? OIIO::TypeFloat
+                                                  : OIIO::TypeUInt8;
+        std::string error;
+        ASSERT_TRUE(write_image_verified(image, ours.string(), type, error))
+            << ext << ": " << error;
+        ASSERT_TRUE(image.write(oiio.string(), type)) << ext;
+        EXPECT_GT(fs::file_size(ours), 0u) << ext;
+        EXPECT_TRUE(bytes_of(ours) == bytes_of(oiio)) << ext;
+    }
+}
+
 TEST_F(IoSafety, AtomicWritesAreVerifiedAndLeaveNoTemporary)
 {
     const OIIO::ImageBuf image = noise_image(32, 32);

@@ -79,9 +79,12 @@ bool write_image_verified(const OIIO::ImageBuf& image, const std::string& path,
     OIIO::TypeDesc format, std::string& error);
 
 /// Writes `image` to `filename` atomically (temporary file + rename): a failed write
-/// leaves no file behind and never an incomplete one: the file is synced to the disk
-/// and read back completely (sync_written_file, verify_image_file) before the rename. `format` is
-/// the pixel type on disk (TypeUnknown = the buffer's). Fails (false, "FILE: reason").
+/// leaves no file behind and never an incomplete one. Before the rename the file is either
+/// encoded in memory and written with checked write() calls and fsync (formats OIIO can
+/// write to memory, up to 256 MB of pixels at `format`, within memory_available()), or
+/// written by OIIO, synced and read back completely (sync_written_file, verify_image_file).
+/// The bytes are the same either way. `format` is the pixel type on disk (TypeUnknown =
+/// the buffer's). Fails (false, "FILE: reason").
 bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename,
     OIIO::TypeDesc format, std::string& error);
 

@@ -169,10 +169,10 @@ bool write_image_verified(
     const OIIO::ImageBuf& image, const std::string& path, OIIO::TypeDesc format, std::string& error)
 {
     std::string reason;
-    bool written;
     if (OIIO::Strutil::iends_with(path, ".tx")) {
         // A texture for renderers: tiled, MIP-mapped by OIIO's own texture maker, wrapping
-        // as the image says (a synthesis that tiles: periodic).
+        // as the image says (a synthesis that tiles: periodic). Written by OIIO, so read
+        // back as every such file is.
         OIIO::ImageSpec config;
         config.set_format(format == OIIO::TypeUnknown ? image.spec().format : format);
         config.tile_width = config.tile_height = 64;
@@ -180,16 +180,12 @@ bool write_image_verified(
         config.attribute("compression", "zip");
         config.attribute(
             "wrapmodes", image.spec().get_string_attribute("wrapmodes", "black,black"));
-        written = OIIO::ImageBufAlgo::make_texture(
-            OIIO::ImageBufAlgo::MakeTxTexture, image, path, config);
-        if (!written)
+        if (!OIIO::ImageBufAlgo::make_texture(
+                OIIO::ImageBufAlgo::MakeTxTexture, image, path, config))
             reason = one_line(OIIO::geterror());
-    } else {
-        written = image.write(path, format);
-        if (!written)
-            reason = one_line(image.geterror());
-    }
-    if (written && sync_written_file(path, reason) && verify_image_file(path, image.spec(), reason))
+        else if (sync_written_file(path, reason) && verify_image_file(path, image.spec(), reason))
+            return true;
+    } else if (write_image_checked(image, path, format, reason))
         return true;
     std::error_code ec;
     fs::remove(path, ec);

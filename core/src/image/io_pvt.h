@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <OpenImageIO/imagebuf.h>
+
 namespace texsyn {
 
 /// `s` with line breaks turned into spaces and trailing spaces removed: the tool prints
@@ -15,5 +17,10 @@ std::string one_line(std::string s);
 /// JPEG-compressed TIFF, do not all decode. True for anything that is not a TIFF this
 /// check can read: the image reader then decides.
 bool tiff_data_fits_in_file(const std::string& path, std::string& reason);
+
+/// The write and the checks of write_image_atomic (texsyn/io.h), to `path` itself. False
+/// with a reason otherwise; `path` may then exist, incomplete.
+bool write_image_checked(const OIIO::ImageBuf& image, const std::string& path,
+    OIIO::TypeDesc format, std::string& reason);
 
 } // namespace texsyn

@@ -2,6 +2,11 @@
 #include <texsyn/image.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <new>
+
+#include "planar_pvt.h"
 
 namespace texsyn {
 
@@ -50,10 +55,17 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
         return false;
     }
     const int w = spec.width, h = spec.height, nc = spec.nchannels;
-    std::vector<float> pixels(size_t(w) * size_t(h) * size_t(nc));
-    if (!src.get_pixels(src.roi(), OIIO::TypeFloat, pixels.data())) {
-        error = src.geterror();
-        return false;
+    // Float pixels in memory are read where they are; anything else (another pixel type, a
+    // file read lazily through the cache) is converted into a copy first.
+    std::vector<float> copy;
+    const float* pixels = contiguous_float_pixels(src);
+    if (!pixels) {
+        copy.resize(size_t(w) * size_t(h) * size_t(nc));
+        if (!src.get_pixels(src.roi(), OIIO::TypeFloat, copy.data())) {
+            error = src.geterror();
+            return false;
+        }
+        pixels = copy.data();
     }
     PlanarImage out;
     out.alpha_channel
@@ -65,9 +77,12 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
         out.channel_names.push_back(
             c < int(spec.channelnames.size()) ? spec.channelnames[c] : "c" + std::to_string(c));
     }
+    std::vector<float*> rows(size_t(nc), nullptr);
     for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const float* p = &pixels[(size_t(y) * w + x) * nc];
+        for (int c = 0; c < nc; ++c)
+            rows[size_t(c)] = out.channels[size_t(c)].row(y);
+        const float* p = pixels + size_t(y) * size_t(w) * size_t(nc);
+        for (int x = 0; x < w; ++x, p += nc) {
             for (int c = 0; c < nc; ++c) {
                 if (!std::isfinite(p[c])) {
                     error = "pixel (" + std::to_string(x + spec.x) + ", "
@@ -76,13 +91,13 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
                         + "; texsyn needs finite pixel values";
                     return false;
                 }
-                out.channels[c](x, y) = p[c];
+                rows[size_t(c)][x] = p[c];
             }
             if (associated) {
                 float a = p[out.alpha_channel];
                 if (a > 0.0f && a != 1.0f)
                     for (int c = 0; c < out.alpha_channel; ++c)
-                        out.channels[c](x, y) /= a;
+                        rows[size_t(c)][x] /= a;
             }
         }
     }
@@ -99,18 +114,67 @@ void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst, bool asso
     const bool multiply = associate && src.alpha_channel >= 0;
     if (!associate && src.alpha_channel >= 0)
         spec.attribute("oiio:UnassociatedAlpha", 1);
-    dst.reset(spec);
-    std::vector<float> pixels(size_t(w) * size_t(h) * size_t(nc));
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            float* p = &pixels[(size_t(y) * w + x) * nc];
-            float a = src.alpha_channel >= 0 ? src.channels[src.alpha_channel](x, y) : 1.0f;
+    // Every pixel is written below: no zero fill first.
+    dst.reset(spec, OIIO::InitializePixels::No);
+    auto* pixels = static_cast<float*>(dst.localpixels());
+    if (!pixels) {
+        if (w > 0 && h > 0 && nc > 0) // OIIO logs a failed allocation and leaves no pixels
+            throw std::bad_alloc();
+        return;
+    }
+    std::vector<const float*> rows(size_t(nc), nullptr);
+    for (int y = 0; y < h; ++y) {
+        for (int c = 0; c < nc; ++c)
+            rows[size_t(c)] = src.channels[size_t(c)].row(y);
+        float* p = pixels + size_t(y) * size_t(w) * size_t(nc);
+        for (int x = 0; x < w; ++x, p += nc) {
+            float a = src.alpha_channel >= 0 ? rows[size_t(src.alpha_channel)][x] : 1.0f;
             for (int c = 0; c < nc; ++c) {
-                float v = src.channels[c](x, y);
+                float v = rows[size_t(c)][x];
                 p[c] = (multiply && c < src.alpha_channel) ? v * a : v;
             }
         }
-    dst.set_pixels(dst.roi(), OIIO::TypeFloat, pixels.data());
+    }
+}
+
+const float* contiguous_float_pixels(const OIIO::ImageBuf& buf)
+{
+    const OIIO::ImageSpec& spec = buf.spec();
+    const auto pixel = OIIO::stride_t(spec.nchannels) * OIIO::stride_t(sizeof(float));
+    if (!buf.localpixels() || spec.format != OIIO::TypeFloat || !spec.channelformats.empty()
+        || buf.pixel_stride() != pixel || buf.scanline_stride() != pixel * spec.width)
+        return nullptr;
+    return static_cast<const float*>(buf.localpixels());
+}
+
+bool copy_without_planes(const OIIO::ImageBuf& src, OIIO::ImageBuf& dst)
+{
+    const OIIO::ImageSpec& spec = src.spec();
+    const int nc = spec.nchannels;
+    const float* pixels = contiguous_float_pixels(src);
+    if (!pixels || src.has_error() || spec.width < 1 || spec.height < 1 || nc < 1 || spec.depth > 1
+        || int(spec.channelnames.size()) != nc
+        || (spec.alpha_channel >= 1 && spec.alpha_channel < nc))
+        return false;
+    const size_t n = size_t(spec.width) * size_t(spec.height) * size_t(nc);
+    // All exponent bits set is Inf or NaN; or-ing a flag per value keeps the loop vectorised.
+    uint32_t not_finite = 0;
+    for (size_t i = 0; i < n; ++i) {
+        uint32_t bits;
+        std::memcpy(&bits, pixels + i, sizeof bits);
+        not_finite |= uint32_t((bits & 0x7f800000u) == 0x7f800000u);
+    }
+    if (not_finite)
+        return false;
+    OIIO::ImageSpec out(spec.width, spec.height, nc, OIIO::TypeFloat);
+    out.channelnames = spec.channelnames;
+    out.alpha_channel = -1;
+    OIIO::ImageBuf result(out, OIIO::InitializePixels::No);
+    if (!result.localpixels())
+        throw std::bad_alloc();
+    std::memcpy(result.localpixels(), pixels, n * sizeof(float));
+    dst = std::move(result);
+    return true;
 }
 
 } // namespace texsyn

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Written files are checked before they are committed: image libraries do not all report
-// a full disk (a PNG ends truncated, a TGA sparse), so success means the bytes reached the
-// disk (fsync), the file has no holes, and an image decodes completely.
+// a full disk (a PNG ends truncated, a TGA sparse, and OIIO's ImageBuf::write ignores what
+// the writer's close() returns). So an image is encoded in memory and its bytes written
+// here, every write() checked, then fsynced; one that cannot be (no memory writer, too
+// large) is written by the library and then checked: the bytes reached the disk (fsync),
+// the file has no holes, and an image decodes completely.
 #include <texsyn/io.h>
 
 #include <algorithm>
@@ -13,7 +16,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
+
+#include <texsyn/memory.h>
 
 #include "io_pvt.h"
 
@@ -26,7 +33,92 @@ std::string errno_text(const char* what)
     return std::string(what) + " (" + std::strerror(errno) + ")";
 }
 
+// write_bytes() for `size` bytes at `data`.
+bool write_file(const std::string& path, const void* data, size_t size, std::string& reason)
+{
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        reason = errno_text("cannot create");
+        return false;
+    }
+    const auto* bytes = static_cast<const char*>(data);
+    size_t done = 0;
+    while (done < size) {
+        const ssize_t n = ::write(fd, bytes + done, size - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            reason = errno_text("write error");
+            ::close(fd);
+            return false;
+        }
+        done += size_t(n);
+    }
+    if (::fsync(fd) != 0) {
+        reason = errno_text("the data did not reach the disk");
+        ::close(fd);
+        return false;
+    }
+    if (::close(fd) != 0) {
+        reason = errno_text("write error");
+        return false;
+    }
+    return true;
+}
+
+// Images whose pixels at the file's type take more than this are written by the library
+// and read back, rather than held a second time, encoded, in memory.
+constexpr size_t max_encoded_in_memory = size_t(256) << 20;
+
+// The size of `image`'s pixels at the file's pixel type, if they are in memory and packed
+// (so that an ImageBuf wrapping them writes the same file); else 0.
+size_t packed_file_bytes(const OIIO::ImageBuf& image, OIIO::TypeDesc format)
+{
+    const OIIO::ImageSpec& spec = image.spec();
+    if (!image.localpixels() || image.pixel_stride() != OIIO::stride_t(spec.pixel_bytes())
+        || image.scanline_stride() != OIIO::stride_t(spec.scanline_bytes())
+        || image.z_stride() != OIIO::stride_t(spec.scanline_bytes() * size_t(spec.height)))
+        return 0;
+    OIIO::ImageSpec file = spec;
+    if (format != OIIO::TypeUnknown)
+        file.set_format(format);
+    return size_t(file.image_bytes());
+}
+
 } // namespace
+
+bool write_image_checked(const OIIO::ImageBuf& image, const std::string& path,
+    OIIO::TypeDesc format, std::string& reason)
+{
+    const size_t raw = packed_file_bytes(image, format);
+    std::string refusal;
+    if (raw > 0 && raw <= max_encoded_in_memory
+        && check_memory(raw, "the encoded image", refusal)) {
+        auto out = OIIO::ImageOutput::create(path);
+        if (out && out->supports("ioproxy")) {
+            out.reset();
+            std::vector<unsigned char> bytes;
+            bytes.reserve(raw + (size_t(1) << 16)); // what most files need: no regrowth
+            OIIO::Filesystem::IOVecOutput memory(bytes);
+            OIIO::ImageBuf view(image.spec(), const_cast<void*>(image.localpixels()));
+            view.set_write_ioproxy(&memory);
+            if (!view.write(path, format)) {
+                reason = one_line(view.geterror());
+                return false;
+            }
+            if (bytes.empty()) {
+                reason = "the image library wrote nothing";
+                return false;
+            }
+            return write_file(path, bytes.data(), bytes.size(), reason);
+        }
+    }
+    if (!image.write(path, format)) {
+        reason = one_line(image.geterror());
+        return false;
+    }
+    return sync_written_file(path, reason) && verify_image_file(path, image.spec(), reason);
+}
 
 std::string one_line(std::string s)
 {
@@ -109,33 +201,7 @@ bool verify_image_file(
 
 bool write_bytes(const std::string& path, const std::string& bytes, std::string& reason)
 {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (fd < 0) {
-        reason = errno_text("cannot create");
-        return false;
-    }
-    size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0) {
-            reason = errno_text("write error");
-            ::close(fd);
-            return false;
-        }
-        done += size_t(n);
-    }
-    if (::fsync(fd) != 0) {
-        reason = errno_text("the data did not reach the disk");
-        ::close(fd);
-        return false;
-    }
-    if (::close(fd) != 0) {
-        reason = errno_text("write error");
-        return false;
-    }
-    return true;
+    return write_file(path, bytes.data(), bytes.size(), reason);
 }
 
 } // namespace texsyn
