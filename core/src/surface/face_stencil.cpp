@@ -114,15 +114,24 @@ std::vector<std::array<uint32_t, kStencilSlots>> face_stencils(const FaceLevel& 
     std::vector<std::array<uint32_t, kStencilSlots>> out(level.size());
     // A face of the two rings further than this (in edge lengths) from every slot stays out.
     constexpr float kReach2 = 0.3f * 0.3f;
-    auto faces_touching = [&level](uint32_t f, std::vector<uint32_t>& into) {
-        for (uint32_t v : level.faces[f])
-            for (uint32_t i = level.vertex_face_start[v]; i < level.vertex_face_start[v + 1]; ++i)
-                into.push_back(level.vertex_faces[i]);
-    };
+    // Few chunks: each holds a mark per face of the level.
+    const int64_t chunk = std::max<int64_t>(1, int64_t(level.size()) / 8);
     OIIO::parallel_for_chunked(
-        0, int64_t(level.size()), 0,
+        0, int64_t(level.size()), chunk,
         [&](int64_t begin, int64_t end) {
-            std::vector<uint32_t> ring1, rings;
+            // The two rings, each face once: `seen` holds the face it was last gathered for.
+            std::vector<uint32_t> seen(level.size(), kNoFace), ring1, rings;
+            auto gather = [&](uint32_t around, uint32_t f, std::vector<uint32_t>& into) {
+                for (uint32_t v : level.faces[around])
+                    for (uint32_t i = level.vertex_face_start[v];
+                         i < level.vertex_face_start[v + 1]; ++i) {
+                        const uint32_t g = level.vertex_faces[i];
+                        if (seen[g] != f) {
+                            seen[g] = f;
+                            into.push_back(g);
+                        }
+                    }
+            };
             std::array<float, kStencilSlots> best {};
             for (int64_t fi = begin; fi < end; ++fi) {
                 const uint32_t f = uint32_t(fi);
@@ -134,12 +143,11 @@ std::vector<std::array<uint32_t, kStencilSlots>> face_stencils(const FaceLevel& 
                 const Imath::V3f x = (b - a).normalized();
                 const Imath::V3f y = level.normal[f].cross(x);
                 ring1.clear();
-                faces_touching(f, ring1);
+                seen[f] = f;
+                gather(f, f, ring1);
                 rings = ring1;
                 for (uint32_t g : ring1)
-                    faces_touching(g, rings);
-                std::sort(rings.begin(), rings.end());
-                rings.erase(std::unique(rings.begin(), rings.end()), rings.end());
+                    gather(g, f, rings);
                 out[f].fill(kNoFace);
                 best.fill(kReach2);
                 for (uint32_t g : rings) {
