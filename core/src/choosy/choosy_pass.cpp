@@ -89,4 +89,21 @@ void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& s
     }
 }
 
+void choosy_passes(ChoosyTarget& target, ChoiceIndex& index, const ChoosyOptions& opt,
+    int iterations, uint64_t stream, PassProgress& progress)
+{
+    for (int it = 0; it < iterations; ++it) {
+        PassSettings pass;
+        pass.seed = opt.seed;
+        pass.stream = stream + uint64_t(it);
+        pass.nthreads = opt.nthreads;
+        pass.visited = [&](size_t n) {
+            progress.done += n;
+            if (opt.progress)
+                opt.progress(float(double(progress.done) / double(progress.total)));
+        };
+        choosy_pass(target, index, pass);
+    }
+}
+
 } // namespace texsyn::detail

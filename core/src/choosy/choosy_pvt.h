@@ -105,6 +105,14 @@ std::unique_ptr<ChoiceIndex> make_exhaustive_choice(
 std::unique_ptr<ChoiceIndex> make_kdtree_choice(
     const AnalysisPoints& points, float penalty, int dims, float eps, int nthreads);
 
+/// The index `opt.search` asks for over `points` (exhaustive or kd-trees).
+std::unique_ptr<ChoiceIndex> make_choice_index(
+    const AnalysisPoints& points, const ChoosyOptions& opt);
+
+/// The top-left part of every plane whose sides are multiples of `unit` (the planes
+/// themselves if they are).
+std::vector<Plane> crop_to_multiple(const std::vector<Plane>& planes, int unit);
+
 /// One output level as choosy sampling sees it.
 class ChoosyTarget {
 public:
@@ -141,6 +149,17 @@ struct PassSettings {
 /// affected (a neighbour changed, or the same sample site was chosen) is searched again at
 /// its turn. The result depends on the seed, never on nthreads.
 void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& settings);
+
+/// Progress over the passes of a synthesis: visits done of `total`.
+struct PassProgress {
+    size_t done = 0;
+    size_t total = 1;
+};
+
+/// `iterations` passes of choosy_pass() over one level with `opt`'s seed, threads and
+/// progress callback; pass `it` uses stream `stream + it`.
+void choosy_passes(ChoosyTarget& target, ChoiceIndex& index, const ChoosyOptions& opt,
+    int iterations, uint64_t stream, PassProgress& progress);
 
 /// Visits per round for a level of `sites` sites: sites / 512 clamped to [1, 256], so
 /// that few visits of a round are neighbours.

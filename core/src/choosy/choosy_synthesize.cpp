@@ -33,22 +33,6 @@ int levels_allowed(int w, int h, int wanted)
     return l;
 }
 
-// The top-left part of every plane whose sides are multiples of `unit`.
-std::vector<Plane> crop_to_multiple(const std::vector<Plane>& planes, int unit)
-{
-    const int w = planes[0].width() / unit * unit, h = planes[0].height() / unit * unit;
-    if (w == planes[0].width() && h == planes[0].height())
-        return planes;
-    std::vector<Plane> out;
-    for (const Plane& p : planes) {
-        Plane c(w, h);
-        for (int y = 0; y < h; ++y)
-            std::copy_n(p.row(y), w, c.row(y));
-        out.push_back(std::move(c));
-    }
-    return out;
-}
-
 // An output level of w x h with room for its Laplacian children (below the finest).
 GridLevel empty_level(int w, int h, size_t nchannels, bool finest)
 {
@@ -73,14 +57,6 @@ void random_start(GridLevel& out, const std::vector<Plane>& sample, uint64_t see
     }
 }
 
-std::unique_ptr<detail::ChoiceIndex> make_index(
-    const detail::AnalysisPoints& points, const ChoosyOptions& opt)
-{
-    if (opt.search == ChoosySearch::Exhaustive)
-        return detail::make_exhaustive_choice(points, opt.penalty, opt.nthreads);
-    return detail::make_kdtree_choice(points, opt.penalty, opt.dims, opt.eps, opt.nthreads);
-}
-
 bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyOptions& opt,
     OIIO::ImageBuf* source_map)
 {
@@ -99,12 +75,13 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyO
         return false;
     }
 
-    const detail::ChoosyAnalysis analysis
-        = detail::analyze_choosy(crop_to_multiple(in.channels, unit), opt.levels, opt.nthreads);
+    const detail::ChoosyAnalysis analysis = detail::analyze_choosy(
+        detail::crop_to_multiple(in.channels, unit), opt.levels, opt.nthreads);
     const int orientations = opt.isotropic ? 8 : 1;
-    size_t total = 0, done = 0;
+    detail::PassProgress progress;
+    progress.total = 0;
     for (int l = 0; l < opt.levels; ++l)
-        total += size_t(opt.iterations_at(l)) * size_t(w >> l) * size_t(h >> l);
+        progress.total += size_t(opt.iterations_at(l)) * size_t(w >> l) * size_t(h >> l);
     const int top = opt.levels - 1;
     GridLevel out = empty_level(w >> top, h >> top, in.nchannels(), top == 0);
     random_start(out, analysis.gaussian[size_t(top)], opt.seed);
@@ -114,20 +91,10 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyO
         const std::vector<Plane>& children = l > 0 ? analysis.laplacian[size_t(l - 1)] : none;
         {
             const detail::AnalysisPoints points = detail::grid_points(gaussian, orientations);
-            auto index = make_index(points, opt);
+            auto index = detail::make_choice_index(points, opt);
             auto target = detail::make_grid_target(out, gaussian, children, orientations);
-            for (int it = 0; it < opt.iterations_at(l); ++it) {
-                detail::PassSettings pass;
-                pass.seed = opt.seed;
-                pass.stream = 0x43530000 + uint64_t(l) * 256 + uint64_t(it);
-                pass.nthreads = opt.nthreads;
-                pass.visited = [&](size_t n) {
-                    done += n;
-                    if (opt.progress)
-                        opt.progress(float(double(done) / double(total)));
-                };
-                detail::choosy_pass(*target, *index, pass);
-            }
+            detail::choosy_passes(*target, *index, opt, opt.iterations_at(l),
+                0x43530000 + uint64_t(l) * 256, progress);
         }
         if (l > 0) {
             GridLevel next = empty_level(w >> (l - 1), h >> (l - 1), in.nchannels(), l == 1);
@@ -163,6 +130,29 @@ OIIO::ImageBuf choosy_synthesize(
 }
 
 namespace detail {
+
+std::vector<Plane> crop_to_multiple(const std::vector<Plane>& planes, int unit)
+{
+    const int w = planes[0].width() / unit * unit, h = planes[0].height() / unit * unit;
+    if (w == planes[0].width() && h == planes[0].height())
+        return planes;
+    std::vector<Plane> out;
+    for (const Plane& p : planes) {
+        Plane c(w, h);
+        for (int y = 0; y < h; ++y)
+            std::copy_n(p.row(y), w, c.row(y));
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::unique_ptr<ChoiceIndex> make_choice_index(
+    const AnalysisPoints& points, const ChoosyOptions& opt)
+{
+    if (opt.search == ChoosySearch::Exhaustive)
+        return make_exhaustive_choice(points, opt.penalty, opt.nthreads);
+    return make_kdtree_choice(points, opt.penalty, opt.dims, opt.eps, opt.nthreads);
+}
 
 // The sample's size `sw` x `sh` as given (its crop to a multiple of 2^(levels-1) has the
 // same coarsest level).
