@@ -85,6 +85,22 @@ size_t packed_file_bytes(const OIIO::ImageBuf& image, OIIO::TypeDesc format)
     return size_t(file.image_bytes());
 }
 
+// Whether `bytes`, an image file named like `path`, opens as an image of `spec`'s size and
+// channels (its header only: the pixels were encoded from memory by the same library).
+bool header_reads_back(
+    const std::string& path, std::vector<unsigned char>& bytes, const OIIO::ImageSpec& spec)
+{
+    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+    auto in = OIIO::ImageInput::create(path, false, nullptr, &reader);
+    OIIO::ImageSpec got;
+    const bool ok = in && in->open(path, got) && got.width == spec.width
+        && got.height == spec.height && got.nchannels == spec.nchannels;
+    if (in && !ok)
+        (void)in->geterror();
+    (void)OIIO::geterror();
+    return ok;
+}
+
 } // namespace
 
 bool write_image_checked(const OIIO::ImageBuf& image, const std::string& path,
@@ -106,11 +122,11 @@ bool write_image_checked(const OIIO::ImageBuf& image, const std::string& path,
                 reason = one_line(view.geterror());
                 return false;
             }
-            if (bytes.empty()) {
-                reason = "the image library wrote nothing";
-                return false;
-            }
-            return write_file(path, bytes.data(), bytes.size(), reason);
+            // A memory writer can fail silently where a file writer does not (OIIO 2.4's
+            // TIFF writer leaves out its directory when the file has an Exif block): such
+            // bytes are not used, and the file is written and read back instead.
+            if (header_reads_back(path, bytes, image.spec()))
+                return write_file(path, bytes.data(), bytes.size(), reason);
         }
     }
     if (!image.write(path, format)) {
