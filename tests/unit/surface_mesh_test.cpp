@@ -1,0 +1,331 @@
+// SPDX-License-Identifier: Apache-2.0
+// Surface meshes (issue #17): reading and checking OBJ and PLY.
+#include "surface/surface_mesh_pvt.h"
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "surface/mesh_detail_pvt.h"
+
+namespace fs = std::filesystem;
+using namespace texsyn::detail;
+
+namespace {
+
+std::string mesh_path(const std::string& name)
+{
+    return std::string(TEXSYN_SOURCE_DIR) + "/data/meshes/" + name;
+}
+
+SurfaceMesh bundled(const std::string& name)
+{
+    SurfaceMesh mesh;
+    std::string error;
+    EXPECT_TRUE(read_surface_mesh(mesh_path(name), mesh, error)) << error;
+    return mesh;
+}
+
+class SurfaceMeshTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        dir = fs::temp_directory_path()
+            / (std::string("texsyn_surface_")
+                + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    std::string write(const std::string& name, const std::string& bytes) const
+    {
+        const std::string path = (dir / name).string();
+        std::ofstream(path, std::ios::binary) << bytes;
+        return path;
+    }
+
+    // The error reading `bytes` as file `name` gives, after "PATH: " (which it must start
+    // with); the read must fail on one line, print nothing and leave the mesh empty.
+    std::string read_error(const std::string& name, const std::string& bytes) const
+    {
+        const std::string path = write(name, bytes);
+        SurfaceMesh mesh;
+        mesh.vertices.resize(1);
+        std::string error;
+        ::testing::internal::CaptureStderr();
+        ::testing::internal::CaptureStdout();
+        const bool read = read_surface_mesh(path, mesh, error);
+        const std::string printed
+            = ::testing::internal::GetCapturedStderr() + ::testing::internal::GetCapturedStdout();
+        EXPECT_FALSE(read) << name;
+        EXPECT_EQ(printed, "") << name; // OpenMesh's own messages are silenced
+        EXPECT_TRUE(mesh.vertices.empty() && mesh.faces.empty()) << name;
+        EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+        EXPECT_EQ(error.rfind(path + ": ", 0), 0u) << error;
+        return error.substr(std::min(error.size(), path.size() + 2));
+    }
+
+    fs::path dir;
+};
+
+// A closed tetrahedron, faces counter-clockwise seen from outside.
+const char* const tetrahedron_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                    "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
+
+// A bad file: its name, its bytes and the error reading it gives after "PATH: ".
+struct BadFile {
+    const char* name;
+    std::string bytes;
+    const char* error;
+};
+
+const std::string triangle_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+} // namespace
+
+// --- reading ------------------------------------------------------------------------------
+
+TEST_F(SurfaceMeshTest, BundledMeshesReadWithTheirCountsAndTopology)
+{
+    struct Expected {
+        const char* name;
+        size_t vertices, faces, loops;
+        long euler;
+    };
+    for (const Expected& e :
+        { Expected { "sphere.obj", 812, 1620, 0, 2 }, Expected { "cow.obj", 2904, 5804, 0, 2 },
+            Expected { "mushroom.obj", 2337, 4608, 1, 1 },
+            Expected { "torus_uv.obj", 1152, 2304, 0, 0 } }) {
+        const SurfaceMesh mesh = bundled(e.name);
+        EXPECT_EQ(mesh.vertices.size(), e.vertices) << e.name;
+        EXPECT_EQ(mesh.faces.size(), e.faces) << e.name;
+        const SurfaceTopology t = surface_topology(mesh);
+        EXPECT_EQ(t.components, 1u) << e.name;
+        EXPECT_EQ(t.boundary_loops, e.loops) << e.name;
+        EXPECT_EQ(t.euler_characteristic(), e.euler) << e.name;
+        EXPECT_EQ(mesh.uvs.empty(), std::string(e.name) != "torus_uv.obj") << e.name;
+    }
+    // The first face of sphere.obj, "f 306 126 273", numbered from 0.
+    const std::array<uint32_t, 3> first { 305, 125, 272 };
+    EXPECT_EQ(bundled("sphere.obj").faces[0], first);
+}
+
+TEST_F(SurfaceMeshTest, TorusKeepsOneUvPerFaceCornerAndTwoOnTheSeam)
+{
+    const SurfaceMesh torus = bundled("torus_uv.obj");
+    EXPECT_EQ(torus.face_uvs.size(), 2304u); // one UV triple per face
+    EXPECT_EQ(torus.uvs.size(), 1225u);      // the file's 49 x 25 distinct vt values
+    std::map<uint32_t, std::set<uint32_t>> uvs_of_vertex;
+    for (size_t f = 0; f < torus.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k)
+            uvs_of_vertex[torus.faces[f][k]].insert(torus.face_uvs[f][k]);
+    // The u=0 seam: 24 vertices, each with u=0 on one side and u=1 on the other.
+    size_t seam = 0;
+    for (const auto& [vertex, uvs] : uvs_of_vertex) {
+        std::set<float> us;
+        for (uint32_t t : uvs)
+            us.insert(torus.uvs[t].x);
+        if (us.count(0.0f)) {
+            ++seam;
+            EXPECT_EQ(us, (std::set<float> { 0.0f, 1.0f })) << "vertex " << vertex;
+        }
+    }
+    EXPECT_EQ(seam, 24u);
+    size_t two = 0, four = 0; // the u=0 and v=0 seams cross at one vertex
+    for (const auto& entry : uvs_of_vertex) {
+        two += entry.second.size() == 2;
+        four += entry.second.size() == 4;
+    }
+    EXPECT_EQ(two, 23u + 47u);
+    EXPECT_EQ(four, 1u);
+}
+
+TEST_F(SurfaceMeshTest, PolygonsBecomeFansAndKeepTheirCornerUvs)
+{
+    const std::string path = write("quad.obj",
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+        "f 1/1 2/2 3/3 4/4\n");
+    SurfaceMesh mesh;
+    std::string error;
+    ASSERT_TRUE(read_surface_mesh(path, mesh, error)) << error;
+    using Tri = std::array<uint32_t, 3>;
+    EXPECT_EQ(mesh.faces, (std::vector<Tri> { Tri { 0, 1, 2 }, Tri { 0, 2, 3 } }));
+    ASSERT_EQ(mesh.uvs.size(), 4u);
+    for (size_t f = 0; f < 2; ++f)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(mesh.uvs[mesh.face_uvs[f][k]],
+                Imath::V2f(mesh.vertices[mesh.faces[f][k]].x, mesh.vertices[mesh.faces[f][k]].y));
+}
+
+TEST_F(SurfaceMeshTest, PlyReadsAsciiWithVertexUvsAndNegativeObjIndices)
+{
+    const std::string ply = write("tetra.ply",
+        "ply\nformat ascii 1.0\ncomment a tetrahedron\nelement vertex 4\n"
+        "property float x\nproperty float y\nproperty float z\nproperty float u\n"
+        "property float v\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 1 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
+    SurfaceMesh mesh;
+    std::string error;
+    ASSERT_TRUE(read_surface_mesh(ply, mesh, error)) << error;
+    EXPECT_EQ(mesh.vertices.size(), 4u);
+    EXPECT_EQ(mesh.faces.size(), 4u);
+    ASSERT_EQ(mesh.uvs.size(), 4u); // per vertex: face_uvs are the faces
+    EXPECT_EQ(mesh.face_uvs, mesh.faces);
+    EXPECT_EQ(mesh.uvs[3], Imath::V2f(1, 1));
+
+    const std::string obj = write("relative.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf -4 -2 -3\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
+    ASSERT_TRUE(read_surface_mesh(obj, mesh, error)) << error;
+    EXPECT_EQ(mesh.faces[0], (std::array<uint32_t, 3> { 0, 2, 1 }));
+}
+
+TEST_F(SurfaceMeshTest, BadFilesAreRefusedWithOneLine)
+{
+    const std::string tetrahedron(tetrahedron_obj);
+    const BadFile files[] = {
+        { "none.stl", "solid x\n", "is not a mesh texsyn reads (.obj or .ply)" },
+        { "empty.obj", "", "has no faces (a surface needs at least one triangle)" },
+        { "points.obj", triangle_obj, "has no faces (a surface needs at least one triangle)" },
+        { "truncated.obj", tetrahedron.substr(0, tetrahedron.size() - 3), // inside a face
+            "line 8: 'f 3 1': a face needs at least 3 vertices, found 2" },
+        { "letter.obj", triangle_obj + "f 1 x 3\n",
+            "line 4: 'f 1 x 3': a face corner is v, v/vt, v//vn or v/vt/vn, with whole "
+            "numbers" },
+        { "zero.obj", triangle_obj + "f 0 1 2\n",
+            "line 4: 'f 0 1 2': a vertex index must be at least 1 (OBJ counts from 1)" },
+        { "range.obj", triangle_obj + "f 1 2 3\nf 1 3 9\n",
+            "face 2 refers to vertex 9, but the file has 3 vertices" },
+        { "twice.obj", triangle_obj + "f 1 2 2 3\n",
+            "line 4: 'f 1 2 2 3': the face lists vertex 2 twice" },
+        { "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n",
+            "line 2: 'v nan 0 0': a vertex needs three finite numbers (x y z)" },
+        { "short.obj", "v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n",
+            "line 2: 'v 1 0': a vertex needs three finite numbers (x y z)" },
+        { "mixed.obj", triangle_obj + "vt 0 0\nf 1/1 2/1 3\n",
+            "line 5: 'f 1/1 2/1 3': texture coordinates on some face corners only (give every "
+            "corner v/vt, or none)" },
+        { "vt.obj", triangle_obj + "vt 0 0\nvt 1 0\nf 1/1 2/2 3/3\n",
+            "face 1 refers to a texture coordinate the file does not have (it has 2 vt "
+            "lines)" },
+    };
+    for (const BadFile& f : files)
+        EXPECT_EQ(read_error(f.name, f.bytes), f.error);
+}
+
+TEST_F(SurfaceMeshTest, SurfacesTexsynCannotGrowOnAreRefused)
+{
+    const std::string fin = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n";
+    const BadFile files[] = {
+        { "fins.obj", fin + "f 1 2 3\nf 2 1 4\nf 1 2 5\n",
+            "the edge between vertices 1 and 2 is shared by 3 faces (non-manifold: a surface "
+            "edge borders at most 2)" },
+        { "flipped.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nf 1 2 3\nf 1 2 4\n",
+            "the faces on either side of the edge between vertices 1 and 2 turn opposite ways "
+            "(inconsistent orientation: every face must be counter-clockwise seen from the "
+            "same side)" },
+        { "bowtie.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n",
+            "vertex 1 is where 2 separate fans of faces meet (non-manifold vertex: its faces "
+            "must form one fan)" },
+        { "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n",
+            "the face on vertices 1, 2, 3 has zero area (below 1e-12 x the squared "
+            "bounding-box diagonal)" },
+        { "three.obj",
+            triangle_obj
+                + "v 5 0 0\nv 6 0 0\nv 5 1 0\nv 9 0 0\nv 9 1 0\nv 8 1 0\n"
+                  "f 1 2 3\nf 4 5 6\nf 7 8 9\n",
+            "has 3 separate components; texsyn grows one surface at a time (split it)" },
+        { "inside_out.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 2 4 3\nf 3 4 1\n",
+            "is a closed surface whose faces face inwards (negative enclosed volume); faces "
+            "must be counter-clockwise seen from outside" },
+        { "stray.obj", triangle_obj + "v 7 7 7\nf 1 2 3\n",
+            "vertex 4 belongs to no face (a surface mesh uses every vertex: remove unused "
+            "ones)" },
+    };
+    for (const BadFile& f : files)
+        EXPECT_EQ(read_error(f.name, f.bytes), f.error);
+}
+
+TEST_F(SurfaceMeshTest, BadPlyFilesAreRefusedBeforeOpenMeshReadsThem)
+{
+    const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex 4\n"
+                               "property float x\nproperty float y\nproperty float z\n"
+                               "element face 4\nproperty list uchar int vertex_indices\n"
+                               "end_header\n";
+    std::string data;
+    auto put32 = [&](uint32_t v) {
+        for (int k = 0; k < 4; ++k)
+            data.push_back(char(v >> (8 * k)));
+    };
+    const float points[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    for (const auto& p : points)
+        for (float c : p) {
+            uint32_t bits;
+            std::memcpy(&bits, &c, 4);
+            put32(bits);
+        }
+    const uint32_t faces[4][3] = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 } };
+    for (const auto& f : faces) {
+        data.push_back(3);
+        for (uint32_t v : f)
+            put32(v);
+    }
+    // The whole file reads; one byte less is truncated.
+    SurfaceMesh mesh;
+    std::string error;
+    ASSERT_TRUE(read_surface_mesh(write("tetra.ply", header + data), mesh, error)) << error;
+    EXPECT_EQ(mesh.faces.size(), 4u);
+    const std::string size = std::to_string(header.size() + data.size());
+    EXPECT_EQ(read_error("cut.ply", header + data.substr(0, data.size() - 1)),
+        "is truncated: its header announces 4 vertices and 4 faces (at least " + size
+            + " bytes), but the file has " + std::to_string(header.size() + data.size() - 1));
+
+    std::string nan_data = data;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::memcpy(&nan_data[12], &nan, 4); // vertex 2's x
+    EXPECT_EQ(read_error("nan.ply", header + nan_data),
+        "vertex 2 has a coordinate that is not a finite number (nan, 0.000000, 0.000000)");
+
+    // Counts beyond the limit are refused from the header, before anything is allocated.
+    std::string huge = header;
+    huge.replace(huge.find("vertex 4"), 8, "vertex 60000000");
+    EXPECT_EQ(read_error("huge.ply", huge + data),
+        "has more than 50000000 vertices (texsyn's limit for one surface)");
+
+    EXPECT_EQ(read_error("ascii_cut.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1"),
+        "is truncated: its header announces 3 vertices and 1 faces, but the data stops before "
+        "their end");
+    const std::string triangle_header
+        = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+          "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+          "end_header\n0 0 0\n1 0 0\n0 1 0\n";
+    EXPECT_EQ(
+        read_error("repeat.ply", triangle_header + "3 0 1 1\n"), "face 1 lists vertex 2 twice");
+    EXPECT_EQ(read_error("beyond.ply", triangle_header + "3 0 1 3\n"),
+        "face 1 refers to vertex 4, but the file has 3 vertices");
+    EXPECT_EQ(read_error("noface.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                  "property float z\nend_header\n0 0 0\n"),
+        "the PLY header has no face element with a vertex_indices list");
+    EXPECT_EQ(
+        read_error("text.ply", "solid\n"), "not a PLY file (it does not start with a 'ply' line)");
+}
+
+TEST_F(SurfaceMeshTest, MissingFilesAndFoldersAreNamed)
+{
+    SurfaceMesh mesh;
+    std::string error;
+    const std::string missing = (dir / "missing.obj").string();
+    EXPECT_FALSE(read_surface_mesh(missing, mesh, error));
+    EXPECT_EQ(error, missing + ": no such file");
+    EXPECT_FALSE(read_surface_mesh(dir.string(), mesh, error));
+    EXPECT_EQ(error, dir.string() + ": is a directory, not a mesh");
+}
