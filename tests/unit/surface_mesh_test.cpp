@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Surface meshes (issue #17): reading and checking OBJ and PLY.
+// Surface meshes (issue #17): reading and checking OBJ and PLY, and the face-colour PLY
+// output (read back by OpenMesh, as a viewer would).
 #include "surface/surface_mesh_pvt.h"
 
 #include <cstring>
@@ -7,6 +8,9 @@
 #include <fstream>
 #include <map>
 #include <set>
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <gtest/gtest.h>
 
@@ -85,6 +89,22 @@ struct BadFile {
 };
 
 const std::string triangle_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+uint32_t le32(const char* p)
+{
+    uint32_t v = 0;
+    for (int k = 3; k >= 0; --k)
+        v = (v << 8) | uint8_t(p[k]);
+    return v;
+}
+
+float le_float(const char* p)
+{
+    const uint32_t bits = le32(p);
+    float f;
+    std::memcpy(&f, &bits, 4);
+    return f;
+}
 
 } // namespace
 
@@ -328,4 +348,102 @@ TEST_F(SurfaceMeshTest, MissingFilesAndFoldersAreNamed)
     EXPECT_EQ(error, missing + ": no such file");
     EXPECT_FALSE(read_surface_mesh(dir.string(), mesh, error));
     EXPECT_EQ(error, dir.string() + ": is a directory, not a mesh");
+}
+
+// --- face-colour PLY ------------------------------------------------------------------
+
+TEST_F(SurfaceMeshTest, FaceColourPlyRoundTripsThroughOpenMeshAndByteByByte)
+{
+    const SurfaceMesh cow = bundled("cow.obj");
+    const size_t nf = cow.faces.size();
+    std::vector<std::vector<float>> channels(3, std::vector<float>(nf));
+    std::vector<std::array<uint8_t, 3>> display(nf);
+    for (size_t f = 0; f < nf; ++f) {
+        for (int c = 0; c < 3; ++c)
+            channels[c][f] = float(f % 97) * 0.125f + float(c) - 0.5f; // exact in float
+        display[f] = { uint8_t(f % 251), uint8_t((f * 7) % 256), uint8_t(255 - f % 256) };
+    }
+    const std::string path = (dir / "cow_texture.ply").string();
+    std::string error;
+    ASSERT_TRUE(write_face_colour_ply(
+        path, cow.vertices, cow.faces, channels, { "r", "g", "b" }, &display, error))
+        << error;
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1)
+        << "no temporary file is left";
+
+    // texsyn's own reader (OpenMesh underneath) gives the geometry back exactly.
+    SurfaceMesh back;
+    ASSERT_TRUE(read_surface_mesh(path, back, error)) << error;
+    EXPECT_EQ(back.vertices, cow.vertices);
+    EXPECT_EQ(back.faces, cow.faces);
+
+    // OpenMesh's mesh reader, as a viewer reads it, finds the display colours on the faces.
+    OpenMesh::TriMesh_ArrayKernelT<> om;
+    om.request_face_colors();
+    OpenMesh::IO::Options options = OpenMesh::IO::Options::FaceColor;
+    ASSERT_TRUE(OpenMesh::IO::read_mesh(om, path, options));
+    ASSERT_TRUE(options.check(OpenMesh::IO::Options::FaceColor));
+    ASSERT_EQ(om.n_faces(), nf);
+    for (size_t f = 0; f < nf; f += 101) {
+        const auto colour = om.color(OpenMesh::FaceHandle(int(f)));
+        EXPECT_EQ(colour[0], display[f][0]);
+        EXPECT_EQ(colour[1], display[f][1]);
+        EXPECT_EQ(colour[2], display[f][2]);
+    }
+
+    // The bytes: the header names texsyn and the colour spaces; each face record holds the
+    // float channels exactly.
+    std::ifstream in(path, std::ios::binary);
+    PlyHeader header;
+    ASSERT_TRUE(read_ply_header(in, header, error)) << error;
+    ASSERT_GE(header.comments.size(), 3u);
+    EXPECT_EQ(header.comments[0].rfind("texsyn ", 0), 0u);
+    EXPECT_NE(header.comments[1].find("r g b: float, scene-linear"), std::string::npos);
+    EXPECT_NE(header.comments[2].find("red green blue: 8-bit sRGB"), std::string::npos);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t record = 1 + 12 + 12 + 3;
+    ASSERT_EQ(bytes.size(), cow.vertices.size() * 12 + nf * record);
+    for (size_t f = 0; f < nf; ++f) {
+        const char* r = bytes.data() + cow.vertices.size() * 12 + f * record;
+        ASSERT_EQ(r[0], 3);
+        for (int c = 0; c < 3; ++c) {
+            ASSERT_EQ(le32(r + 1 + 4 * c), cow.faces[f][c]);
+            ASSERT_EQ(le_float(r + 13 + 4 * c), channels[c][f]);
+        }
+    }
+}
+
+TEST_F(SurfaceMeshTest, FaceColourPlyRefusesBadArgumentsAndLeavesNoFile)
+{
+    const std::vector<Imath::V3f> vertices { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+    const std::vector<std::array<uint32_t, 3>> faces { { 0, 1, 2 } };
+    const std::vector<std::vector<float>> one { { 0.5f } };
+    const std::string path = (dir / "out.ply").string();
+    auto refused = [&](const std::string& p, const std::vector<std::array<uint32_t, 3>>& f,
+                       const std::vector<std::vector<float>>& channels,
+                       const std::vector<std::string>& names,
+                       const std::vector<std::array<uint8_t, 3>>* rgb) {
+        std::string error;
+        EXPECT_FALSE(write_face_colour_ply(p, vertices, f, channels, names, rgb, error));
+        EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 0);
+        return error;
+    };
+    const std::vector<std::array<uint8_t, 3>> two_colours(2);
+    EXPECT_EQ(refused(path, faces, one, { "r g" }, nullptr),
+        path
+            + ": cannot write (channel_names[0]='r g' is not a PLY property name (letters, "
+              "digits and '_'))");
+    EXPECT_EQ(refused(path, faces, one, { "red" }, &two_colours),
+        path + ": cannot write (channel_names[0]='red' is already a face property of this file)");
+    EXPECT_EQ(refused(path, faces, one, { "q" }, &two_colours),
+        path + ": cannot write (display_rgb has 2 colours for 1 faces)");
+    EXPECT_EQ(refused(path, faces, { { 1, 2 } }, { "q" }, nullptr),
+        path + ": cannot write (face_channels[0] has 2 values for 1 faces)");
+    EXPECT_EQ(refused(path, { { 0, 1, 3 } }, {}, {}, nullptr),
+        path + ": cannot write (faces[0] refers to vertex 3, but there are 3)");
+    EXPECT_EQ(refused((dir / "out.obj").string(), faces, {}, {}, nullptr),
+        (dir / "out.obj").string() + ": cannot write (a face-colour mesh is written as .ply)");
+    const std::string nowhere = (dir / "no" / "out.ply").string();
+    EXPECT_EQ(refused(nowhere, faces, {}, {}, nullptr),
+        nowhere + ": cannot write (directory " + (dir / "no").string() + " does not exist)");
 }

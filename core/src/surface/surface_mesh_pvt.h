@@ -82,4 +82,22 @@ MeshQuality mesh_quality(const SurfaceMesh& mesh);
 /// The length of the diagonal of the box bounding all vertices (0 if there are none).
 double bounding_box_diagonal(const std::vector<Imath::V3f>& vertices);
 
+/// Writes a binary little-endian PLY for mesh viewers and bakes: `element vertex` (float x
+/// y z), `element face` (list uchar int vertex_indices), one float property per channel,
+/// named after channel_names (scene-linear values; e.g. "r", "g", "b"), then, if
+/// display_rgb is given, uchar red green blue (8-bit sRGB-encoded: the face colours
+/// MeshLab and Blender show), and comment lines naming texsyn and these colour spaces.
+/// face_channels is [channel][face]. Written atomically (temporary file in the same
+/// folder, synced and read back, then renamed); a failed write leaves no file. Fails if
+/// `path` does not end in .ply or its folder does not exist, if there are no faces, a
+/// face index is out of range, more than 2^31-1 vertices or faces, a non-finite vertex,
+/// a channel without one value per face, a channel name that is empty, repeated, not
+/// letters, digits and '_', vertex_indices, or red/green/blue when display_rgb is given,
+/// or display_rgb without one colour per face.
+bool write_face_colour_ply(const std::string& path, const std::vector<Imath::V3f>& vertices,
+    const std::vector<std::array<uint32_t, 3>>& faces,
+    const std::vector<std::vector<float>>& face_channels,
+    const std::vector<std::string>& channel_names,
+    const std::vector<std::array<uint8_t, 3>>* display_rgb, std::string& error);
+
 } // namespace texsyn::detail
