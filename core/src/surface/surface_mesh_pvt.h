@@ -14,6 +14,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,64 @@ MeshQuality mesh_quality(const SurfaceMesh& mesh);
 
 /// The length of the diagonal of the box bounding all vertices (0 if there are none).
 double bounding_box_diagonal(const std::vector<Imath::V3f>& vertices);
+
+/// Isotropic remeshing (Botsch & Kobbelt 2004, the remesher §3.9 asks for: faces of nearly
+/// equal area, nearly equilateral, valences near 6) with OpenMesh's topological operators.
+/// `iterations` rounds of: split edges longer than 4/3 L, collapse edges shorter than 4/5 L
+/// where OpenMesh's link condition allows it and no edge longer than 4/3 L or turned-over
+/// face results, flip edges towards valence 6 (4 on the boundary), tangential (uniform
+/// Laplacian) relaxation, and projection of every vertex onto the input (onto the closest
+/// input face facing its way; boundary vertices onto the input's boundary, which they
+/// never leave). L starts from the input's area and `target_faces` (equilateral faces:
+/// sqrt(3)/4 L^2 each) and follows the face count after each round, so that the result
+/// has target_faces within a few percent after about 5 rounds. Keeps the input's topology
+/// (genus, boundary loops, one component). Parts thinner than about L (the cow's tail at
+/// 4000 faces) come out as a few slivers. `output` has no UVs: map its points to the
+/// input's with SurfaceProjector. Fails if `input` fails check_surface_mesh(), if
+/// target_faces is outside 8..kMaxMeshElements or iterations outside 1..100, or if the
+/// result fails check_surface_mesh() (a target too coarse for the shape).
+bool remesh_isotropic(const SurfaceMesh& input, size_t target_faces, SurfaceMesh& output,
+    std::string& error, int iterations = 10);
+
+/// A point on a mesh: the face it lies in, its barycentric coordinates for that face's
+/// corners (in the face's vertex order; non-negative, summing to 1), its position and its
+/// distance to the query point.
+struct SurfacePoint {
+    uint32_t face = 0;
+    Imath::V3f barycentric { 1, 0, 0 };
+    Imath::V3f position { 0, 0, 0 };
+    float distance = 0;
+};
+
+/// Exact closest points on a mesh: a kd-tree over face centroids proposes the candidates,
+/// closest-point-on-triangle decides (in double precision; among faces at the same distance,
+/// the lowest index wins). A query costs more when the mesh has a few faces much larger
+/// than the others (every face within the largest face's reach is a candidate).
+/// Thread safety: immutable after construction; const methods may be called concurrently.
+class SurfaceProjector {
+public:
+    /// Indexes `mesh`, which must have at least one face, indices in range, and must
+    /// outlive the projector unchanged. May throw std::bad_alloc.
+    explicit SurfaceProjector(const SurfaceMesh& mesh);
+    ~SurfaceProjector();
+
+    /// The point of the mesh closest to `p`.
+    SurfacePoint closest_point(const Imath::V3f& p) const;
+
+    /// The point closest to `p` among the faces that face the way `normal` does (face
+    /// normal within 90 degrees of it): a point just off a part thinner than its distance
+    /// to it then finds its own side. False if no face faces that way.
+    bool closest_facing_point(
+        const Imath::V3f& p, const Imath::V3f& normal, SurfacePoint& point) const;
+
+    /// The point of the mesh's boundary (edges with one face) closest to `p`, in that
+    /// edge's face. False if the mesh is closed.
+    bool closest_boundary_point(const Imath::V3f& p, SurfacePoint& point) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
 
 /// Writes a binary little-endian PLY for mesh viewers and bakes: `element vertex` (float x
 /// y z), `element face` (list uchar int vertex_indices), one float property per channel,
