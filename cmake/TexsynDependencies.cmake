@@ -28,6 +28,9 @@ find_package(kissfft CONFIG REQUIRED COMPONENTS SHARED float)
 if(TEXSYN_WITH_FFTW)
   pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
 endif()
+if(TEXSYN_WITH_CGAL)
+  find_package(CGAL 5.5 CONFIG REQUIRED)
+endif()
 
 # OpenVDB (solid textures' .vdb output): Debian ships a find module, not a config package.
 # It needs libboost-iostreams-dev too (its find module looks for Boost.Iostreams).

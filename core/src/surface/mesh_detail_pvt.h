@@ -84,6 +84,13 @@ inline size_t edge_end(const std::vector<EdgeUse>& uses, size_t i)
     return j;
 }
 
+#if TEXSYN_HAVE_CGAL
+/// CGAL's isotropic_remeshing of `input` (checked) at target edge length `length`, for
+/// `iterations` rounds (remesh_cgal.cpp, GPL). May throw what CGAL throws.
+struct SurfaceMesh;
+void remesh_with_cgal(const SurfaceMesh& input, double length, int iterations, SurfaceMesh& output);
+#endif
+
 /// Union-find over 0..n-1 with path halving; a set's representative is its lowest member.
 class DisjointSets {
 public:

@@ -83,6 +83,16 @@ MeshQuality mesh_quality(const SurfaceMesh& mesh);
 /// The length of the diagonal of the box bounding all vertices (0 if there are none).
 double bounding_box_diagonal(const std::vector<Imath::V3f>& vertices);
 
+/// Remeshing backends: OpenMesh (texsyn's own remesher, BSD-3, always built) and
+/// CGAL's isotropic_remeshing (GPL-3.0-or-later; only in -DTEXSYN_WITH_CGAL=ON builds, for
+/// comparison: the same algorithm, its own details; CGAL projects onto the mesh it is
+/// given, so each of 3 runs restarts from the input with L corrected by the last, which
+/// follows the face count less closely).
+enum class RemeshBackend { OpenMesh, Cgal };
+
+/// Whether this build of texsyn contains `backend`.
+bool remesh_backend_available(RemeshBackend backend);
+
 /// Isotropic remeshing (Botsch & Kobbelt 2004, the remesher §3.9 asks for: faces of nearly
 /// equal area, nearly equilateral, valences near 6) with OpenMesh's topological operators.
 /// `iterations` rounds of: split edges longer than 4/3 L, collapse edges shorter than 4/5 L
@@ -96,10 +106,11 @@ double bounding_box_diagonal(const std::vector<Imath::V3f>& vertices);
 /// (genus, boundary loops, one component). Parts thinner than about L (the cow's tail at
 /// 4000 faces) come out as a few slivers. `output` has no UVs: map its points to the
 /// input's with SurfaceProjector. Fails if `input` fails check_surface_mesh(), if
-/// target_faces is outside 8..kMaxMeshElements or iterations outside 1..100, or if the
-/// result fails check_surface_mesh() (a target too coarse for the shape).
+/// target_faces is outside 8..kMaxMeshElements or iterations outside 1..100, if `backend`
+/// is not built in, or if the result fails check_surface_mesh() (a target too coarse for
+/// the shape).
 bool remesh_isotropic(const SurfaceMesh& input, size_t target_faces, SurfaceMesh& output,
-    std::string& error, int iterations = 10);
+    std::string& error, int iterations = 10, RemeshBackend backend = RemeshBackend::OpenMesh);
 
 /// A point on a mesh: the face it lies in, its barycentric coordinates for that face's
 /// corners (in the face's vertex order; non-negative, summing to 1), its position and its
