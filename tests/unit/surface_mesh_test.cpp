@@ -230,8 +230,10 @@ TEST_F(SurfaceMeshTest, BadFilesAreRefusedWithOneLine)
             "line 4: 'f 1 2 2 3': the face lists vertex 2 twice" },
         { "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n",
             "line 2: 'v nan 0 0': a vertex needs three finite numbers (x y z)" },
-        { "short.obj", "v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n",
+        { "short.obj", "v 0 0 0\r\nv 1 0\r\nv 0 1 0\r\nf 1 2 3\r\n", // CRLF line ends
             "line 2: 'v 1 0': a vertex needs three finite numbers (x y z)" },
+        { "binary.obj", std::string("v 0 0 0\nv \x01\0 0 0\n", 17), // control bytes, a NUL
+            "line 2: 'v ?? 0 0': a vertex needs three finite numbers (x y z)" },
         { "mixed.obj", triangle_obj + "vt 0 0\nf 1/1 2/1 3\n",
             "line 5: 'f 1/1 2/1 3': texture coordinates on some face corners only (give every "
             "corner v/vt, or none)" },
@@ -343,6 +345,11 @@ TEST_F(SurfaceMeshTest, BadPlyFilesAreRefusedBeforeOpenMeshReadsThem)
         "the PLY header has no face element with a vertex_indices list");
     EXPECT_EQ(
         read_error("text.ply", "solid\n"), "not a PLY file (it does not start with a 'ply' line)");
+    const std::string binary("ply\nformat ascii 1.0\n\x7f\x01\0\nend_header\n", 35);
+    // (The expected text is split: "??'" would be a trigraph.)
+    EXPECT_EQ(read_error("binary.ply", binary),
+        "header line 3: unknown keyword '??"
+        "?'");
 }
 
 TEST_F(SurfaceMeshTest, MissingFilesAndFoldersAreNamed)

@@ -24,9 +24,11 @@ std::string cannot_open()
     return std::string("cannot be opened (") + std::strerror(errno) + ")";
 }
 
-// "line N: 'TEXT': " with TEXT cut to a readable length.
-std::string at_line(uint64_t number, const std::string& line)
+// "line N: 'TEXT': " with TEXT cut to a readable length (and without a CR line end).
+std::string at_line(uint64_t number, std::string line)
 {
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' '))
+        line.pop_back();
     std::string text = line.substr(0, 48);
     if (text.size() < line.size())
         text += "...";

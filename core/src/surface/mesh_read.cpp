@@ -18,7 +18,6 @@
 
 #include <texsyn/io.h>
 
-#include "image/io_pvt.h"
 #include "mesh_detail_pvt.h"
 #include "surface_mesh_pvt.h"
 
@@ -294,8 +293,14 @@ bool read_surface_mesh(const std::string& path, SurfaceMesh& mesh, std::string& 
     }
     if (ok && check_surface_mesh(mesh, path, error))
         return true;
-    if (!ok)
-        error = path + ": " + one_line(what);
+    if (!ok) {
+        // Messages quote the file (a line, a header keyword): its control characters, a
+        // binary file's bytes, are shown as '?' so that the message stays one line.
+        for (char& c : what)
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+                c = '?';
+        error = path + ": " + what;
+    }
     mesh = SurfaceMesh();
     return false;
 }

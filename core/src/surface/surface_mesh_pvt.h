@@ -6,9 +6,10 @@
 //
 // For every function here: failures return false with one line in `error` that names the
 // file (or the parameter), what was found and what was expected; nothing throws
-// (std::bad_alloc included); an output argument is left empty on failure. Vertices in
-// messages are numbered from 1, in file order (as OBJ numbers them). Everything is serial
-// and deterministic: the same input gives the same output, bit for bit.
+// (std::bad_alloc included) but SurfaceProjector's constructor; an output argument is
+// left empty on failure. Vertices in messages are numbered from 1, in file order (as OBJ
+// numbers them). Everything is serial and deterministic: the same input gives the same
+// output, bit for bit.
 #pragma once
 
 #include <array>
