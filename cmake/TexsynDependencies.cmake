@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-# Finds texsyn's dependencies on Debian 12, with workarounds for three broken package configs.
+# Finds texsyn's dependencies on Debian 12, with workarounds for four broken package configs.
 find_package(PkgConfig REQUIRED)
 
 # OIIO's exported target lists /usr/include/opencv4 even when libopencv-dev is absent.
@@ -28,8 +28,18 @@ find_package(kissfft CONFIG REQUIRED COMPONENTS SHARED float)
 if(TEXSYN_WITH_FFTW)
   pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
 endif()
+if(TEXSYN_WITH_CGAL)
+  find_package(CGAL 5.5 CONFIG REQUIRED)
+endif()
 
 # OpenVDB (solid textures' .vdb output): Debian ships a find module, not a config package.
 # It needs libboost-iostreams-dev too (its find module looks for Boost.Iostreams).
 list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB)
 find_package(OpenVDB REQUIRED)
+
+# OpenMesh (BSD-3; surface meshes, src/surface/): Debian's config has no version file, so no
+# version may be asked for, and its targets (OpenMeshCore, OpenMeshTools) have no namespace
+# (a misspelt name would silently become -lName): link the alias. Its only configuration,
+# "None", serves every build type.
+find_package(OpenMesh CONFIG REQUIRED)
+add_library(OpenMesh::Core ALIAS OpenMeshCore)

@@ -14,6 +14,8 @@ packages=(
   libeigen3-dev nlohmann-json3-dev
   libtiff-dev                               # checks that JPEG-compressed TIFF inputs decode whole
   libnanoflann-dev                          # kd-tree search (--neighborhood:search=kdtree)
+  libopenmesh-dev                           # surface meshes: OBJ/PLY reading, remeshing (BSD-3)
+  libcgal-dev                               # optional GPL remeshing backend (-DTEXSYN_WITH_CGAL=ON)
   libopenvdb-dev libboost-iostreams-dev      # solid textures: .vdb output (OpenVDB's CMake module needs Boost.Iostreams)
   python3-openimageio                       # tests open recipes from Python
   python3-jsonschema                        # tests validate recipes with docs/recipe.schema.json

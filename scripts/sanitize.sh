@@ -85,7 +85,7 @@ cd "$dir"
 # Address-space limits (ulimit -v) cannot work under AddressSanitizer, which reserves
 # terabytes of shadow memory, and glibc's heap statistics (mallinfo2) do not see its
 # allocator: the tests that rely on either run in the normal build only.
-exclude="doc_commands|docs_generated|clang_format|recipe_schema|ocio_config|downstream|fftw_backend"
+exclude="doc_commands|docs_generated|clang_format|recipe_schema|ocio_config|downstream|gpl_backends"
 exclude="$exclude|OutOfMemoryIsAMessage|AddressSpaceLimit|MemoryBytesIsWhatTheSearcherHolds"
 # The picture-quality measurements (*Quality.*) run the same code as the unit tests at
 # sizes that take up to a quarter of an hour each under AddressSanitizer.

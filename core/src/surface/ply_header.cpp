@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: Apache-2.0
+// PLY headers (Turk's format as MeshLab, Blender and OpenMesh write it). Only the header:
+// OpenMesh reads the data.
+#include <sstream>
+
+#include "mesh_detail_pvt.h"
+
+namespace texsyn::detail {
+
+namespace {
+
+// Bytes of one value of a PLY scalar type (both spellings), or 0.
+int ply_type_size(const std::string& type)
+{
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8")
+        return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16")
+        return 2;
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float"
+        || type == "float32")
+        return 4;
+    if (type == "double" || type == "float64")
+        return 8;
+    return 0;
+}
+
+// A header longer than this is not a PLY header (a binary file that starts with "ply").
+constexpr uint64_t kMaxHeaderBytes = 1 << 20;
+
+} // namespace
+
+const PlyElement* PlyHeader::element(const std::string& name) const
+{
+    for (const PlyElement& e : elements)
+        if (e.name == name)
+            return &e;
+    return nullptr;
+}
+
+bool read_ply_header(std::istream& in, PlyHeader& header, std::string& reason)
+{
+    header = PlyHeader();
+    std::string line;
+    bool have_format = false;
+    for (int number = 1;; ++number) {
+        if (!std::getline(in, line)) {
+            reason = "the PLY header has no end_header line";
+            return false;
+        }
+        header.bytes += line.size() + 1;
+        if (header.bytes > kMaxHeaderBytes) {
+            reason = "the PLY header is longer than 1 MiB";
+            return false;
+        }
+        if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        if (number == 1) {
+            if (keyword != "ply" || words >> keyword) {
+                reason = "not a PLY file (it does not start with a 'ply' line)";
+                return false;
+            }
+            continue;
+        }
+        if (keyword == "end_header")
+            break;
+        if (keyword == "comment" || keyword == "obj_info") {
+            const size_t at = line.find_first_not_of(" \t", keyword.size());
+            header.comments.push_back(at == std::string::npos ? "" : line.substr(at));
+            continue;
+        }
+        if (keyword == "format") {
+            std::string format, version;
+            words >> format >> version;
+            if (format == "ascii")
+                header.format = PlyHeader::Format::Ascii;
+            else if (format == "binary_little_endian")
+                header.format = PlyHeader::Format::BinaryLittleEndian;
+            else if (format == "binary_big_endian")
+                header.format = PlyHeader::Format::BinaryBigEndian;
+            else {
+                reason = "unknown PLY format '" + format + "' on header line "
+                    + std::to_string(number);
+                return false;
+            }
+            have_format = true;
+        } else if (keyword == "element") {
+            PlyElement element;
+            long long count = -1;
+            words >> element.name >> count;
+            if (!words || count < 0) {
+                reason = "header line " + std::to_string(number)
+                    + ": an element needs a name and a count";
+                return false;
+            }
+            element.count = uint64_t(count);
+            header.elements.push_back(element);
+        } else if (keyword == "property") {
+            PlyProperty property;
+            std::string type;
+            words >> type;
+            if (type == "list") {
+                std::string count_type;
+                words >> count_type >> type;
+                property.count_size = ply_type_size(count_type);
+                if (property.count_size == 0 || property.count_size == 8) {
+                    reason = "header line " + std::to_string(number) + ": list count type '"
+                        + count_type + "' is not an integer type";
+                    return false;
+                }
+            }
+            property.size = ply_type_size(type);
+            words >> property.name;
+            if (property.size == 0 || property.name.empty() || header.elements.empty()) {
+                reason = "header line " + std::to_string(number) + ": '" + line
+                    + "' is not a property of an element";
+                return false;
+            }
+            header.elements.back().properties.push_back(property);
+        } else {
+            reason
+                = "header line " + std::to_string(number) + ": unknown keyword '" + keyword + "'";
+            return false;
+        }
+    }
+    if (!have_format) {
+        reason = "the PLY header has no format line";
+        return false;
+    }
+    return true;
+}
+
+} // namespace texsyn::detail
