@@ -94,9 +94,10 @@ std::string analysis_takers()
 void check_inputs(const std::string& name, const Method& m, const std::vector<PlannedItem>& popped)
 {
     for (size_t i = 0; i < popped.size(); ++i) {
-        if (popped[i].kind == ItemKind::Volume)
-            throw CliError(name
-                + " : the current image is a solid texture (from --solid); it needs a 2-D image");
+        if (popped[i].kind == ItemKind::Volume || popped[i].kind == ItemKind::Mesh)
+            throw CliError(name + " : the current image is " + item_kind_text(popped[i].kind)
+                + " (from " + (popped[i].kind == ItemKind::Volume ? "--solid" : "--choosy-surface")
+                + "); it needs a 2-D image");
         if (popped[i].kind == ItemKind::Analysis && !m.accepts_analysis(int(i)))
             throw CliError(name + " : needs an image, not an analysis ("
                 + (popped[i].made ? "the " : "") + popped[i].name + "; only " + analysis_takers()
@@ -113,6 +114,15 @@ void check_output_kind(const std::string& out, ItemKind kind)
             + " : a solid texture is written as .vdb (OpenVDB) or .exr (one part per z "
               "slice), not '"
             + std::filesystem::path(out).extension().string() + "'");
+    const bool ply = OIIO::Strutil::iends_with(out, ".ply");
+    if (kind != ItemKind::Mesh && ply)
+        throw CliError("-o " + out
+            + " : .ply holds textured meshes (from --choosy-surface); the current item is "
+            + item_kind_text(kind));
+    if (kind == ItemKind::Mesh && (vdb || is_analysis_filename(out)))
+        throw CliError("-o " + out
+            + " : the current item is a textured mesh; write it as .ply, or its UV bake as an "
+              "image (.exr, .png, .tif)");
     if (kind != ItemKind::Volume && vdb)
         throw CliError(
             "-o " + out + " : .vdb holds solid textures (from --solid); the current image is 2-D");
@@ -335,10 +345,7 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             std::vector<std::string> names;
             for (const PlannedItem& item : popped)
                 names.push_back(item.name);
-            stack.push_back({ m->output == MethodOutput::Volume ? ItemKind::Volume
-                    : m->output == MethodOutput::Analysis       ? ItemKind::Analysis
-                                                                : ItemKind::Image,
-                result_name(*m, names), true });
+            stack.push_back({ item_kind(m->output), result_name(*m, names), true });
         } else {
             check_written(i);
             inputs.push_back(a);
@@ -379,6 +386,8 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
                 throw CliError("-o " + out + " : --subbands writes images, not analysis files");
             continue;
         }
+        if (OIIO::Strutil::iends_with(out, ".ply")) // written by texsyn itself
+            continue;
         auto writer = OIIO::ImageOutput::create(out);
         if (!writer && OIIO::Strutil::iends_with(out, ".vdb")) {
             (void)OIIO::geterror(); // written by texsyn itself, checked above

@@ -160,9 +160,7 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     }
 
     StackItem item;
-    item.kind = m.output == MethodOutput::Volume ? ItemKind::Volume
-        : m.output == MethodOutput::Analysis     ? ItemKind::Analysis
-                                                 : ItemKind::Image;
+    item.kind = item_kind(m.output);
     std::vector<std::string> names;
     for (const StackItem& input : inputs)
         names.push_back(short_name(input));
@@ -189,6 +187,7 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
         item.analysis = std::move(result.analysis);
     }
     item.buf = std::move(result.image);
+    item.surface = std::move(result.surface);
     item.subbands = std::move(result.subbands);
     if (state.verbose) {
         const double secs = seconds_since(start);

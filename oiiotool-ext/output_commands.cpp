@@ -6,6 +6,8 @@
 #include "output_format.h"
 #include "quiet_stderr.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -13,6 +15,7 @@
 
 #include <texsyn/io.h>
 #include <texsyn/subbands.h>
+#include <texsyn/surface.h>
 #include <texsyn/version.h>
 
 namespace texsyn::cli {
@@ -34,7 +37,9 @@ void write_analysis(CliState& state, StackItem& item, const std::string& filenam
     item.file = filename; // once committed, the analysis is that file (for --recipe)
 }
 
-void write_image(CliState& state, const StackItem& item, const std::string& filename)
+// Writes `image`, the pixels of `item` (its own, or one UDIM tile of its bake).
+void write_image(CliState& state, const StackItem& item, const OIIO::ImageBuf& image,
+    const std::string& filename)
 {
     const ColorConfig& cc = state.colors();
     const OIIO::TypeDesc type = output_pixel_type(filename, state.data_format, item.input_format);
@@ -47,8 +52,8 @@ void write_image(CliState& state, const StackItem& item, const std::string& file
 
     std::string error;
     OIIO::ImageBuf out;
-    if (!cc.convert_image(item.buf, cc.scene_linear(), space, stores_associated_alpha(filename),
-            out, error, state.threads))
+    if (!cc.convert_image(image, cc.scene_linear(), space, stores_associated_alpha(filename), out,
+            error, state.threads))
         throw CliError("-o " + filename + " : " + error);
     OIIO::ImageSpec& spec = out.specmod();
     std::string sample = std::string(spec.get_string_attribute("synth:sample"));
@@ -77,6 +82,68 @@ void write_image(CliState& state, const StackItem& item, const std::string& file
         throw CliError("-o " + filename + " : " + state.outputs.final_names(without_file(error)));
 }
 
+// The 8-bit sRGB colours mesh viewers show for `texture`'s faces: its first three channels
+// (one channel: grey) encoded like an untagged 8-bit image.
+std::vector<std::array<uint8_t, 3>> display_colours(CliState& state, const SurfaceTexture& texture)
+{
+    const ColorConfig& cc = state.colors();
+    const size_t nfaces = texture.faces.size();
+    PlanarImage rgb;
+    for (size_t c = 0; c < 3; ++c) {
+        const std::vector<float>& from = texture.colours[std::min(c, texture.colours.size() - 1)];
+        Plane p(int(nfaces), 1);
+        std::copy(from.begin(), from.end(), p.data());
+        rgb.channels.push_back(std::move(p));
+    }
+    rgb.channel_names = { "R", "G", "B" };
+    const std::string srgb = cc.guess_colorspace(OIIO::ImageSpec(1, 1, 3, OIIO::TypeUInt8)).space;
+    std::string error;
+    if (!cc.convert(rgb, cc.scene_linear(), srgb, error, state.threads))
+        throw CliError("display colours: " + error);
+    std::vector<std::array<uint8_t, 3>> out(nfaces);
+    for (size_t f = 0; f < nfaces; ++f)
+        for (size_t c = 0; c < 3; ++c) {
+            const float v = std::clamp(rgb.channels[c].data()[f], 0.0f, 1.0f);
+            out[f][c] = uint8_t(std::lround(v * 255.0f));
+        }
+    return out;
+}
+
+// "torus_<UDIM>.exr" with the tile's number; `filename` as it is if it has no <UDIM>.
+std::string udim_filename(const std::string& filename, int udim)
+{
+    const size_t at = filename.find("<UDIM>");
+    return at == std::string::npos
+        ? filename
+        : filename.substr(0, at) + std::to_string(udim) + filename.substr(at + 6);
+}
+
+// A textured mesh: the mesh as .ply, or its UV bake as images (one per UDIM tile).
+void write_mesh_output(CliState& state, const StackItem& item, const std::string& filename)
+{
+    const SurfaceTexture& texture = *item.surface;
+    std::string error;
+    if (OIIO::Strutil::iends_with(filename, ".ply")) {
+        const std::vector<std::array<uint8_t, 3>> rgb = display_colours(state, texture);
+        if (!write_surface_ply(state.outputs.add(filename), texture, &rgb, error))
+            throw CliError(
+                "-o " + filename + " : " + state.outputs.final_names(without_file(error)));
+        return;
+    }
+    if (texture.bake.empty())
+        throw CliError("-o " + filename + " : the " + item.name
+            + " has no UV bake (its mesh has no UVs, or bake=0x0); write it as .ply");
+    if (texture.bake.size() > 1 && filename.find("<UDIM>") == std::string::npos) {
+        std::string tiles;
+        for (const auto& tile : texture.bake)
+            tiles += (tiles.empty() ? "" : ", ") + std::to_string(tile.first);
+        throw CliError("-o " + filename + " : the mesh's UVs span UDIM tiles " + tiles
+            + "; put <UDIM> in the name (e.g. texture_<UDIM>.exr) for one file per tile");
+    }
+    for (const auto& [udim, image] : texture.bake)
+        write_image(state, item, image, udim_filename(filename, udim));
+}
+
 } // namespace
 
 void write_output(CliState& state, const std::string& filename)
@@ -86,7 +153,9 @@ void write_output(CliState& state, const std::string& filename)
         return write_volume_output(state, filename);
     if (item.kind == ItemKind::Analysis)
         return write_analysis(state, item, filename);
-    write_image(state, item, filename);
+    if (item.kind == ItemKind::Mesh)
+        return write_mesh_output(state, item, filename);
+    write_image(state, item, item.buf, filename);
 }
 
 void write_recipe(CliState& state, const std::string& filename)

@@ -9,6 +9,7 @@ const char* item_kind_text(ItemKind kind)
 {
     return kind == ItemKind::Analysis ? "an analysis"
         : kind == ItemKind::Volume    ? "a solid texture"
+        : kind == ItemKind::Mesh      ? "a textured mesh"
                                       : "an image";
 }
 
@@ -20,6 +21,14 @@ std::string result_name(const Method& m, const std::vector<std::string>& inputs)
     const std::string what
         = m.output == MethodOutput::Analysis ? "analysis" : m.name + " synthesis";
     return names.empty() ? what : what + " of " + names;
+}
+
+ItemKind item_kind(MethodOutput output)
+{
+    return output == MethodOutput::Volume  ? ItemKind::Volume
+        : output == MethodOutput::Analysis ? ItemKind::Analysis
+        : output == MethodOutput::Mesh     ? ItemKind::Mesh
+                                           : ItemKind::Image;
 }
 
 std::string too_few_items(const std::string& command, int needed, int have)

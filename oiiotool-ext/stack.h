@@ -11,6 +11,7 @@
 #include <texsyn/recipe.h>
 #include <texsyn/stats.h>
 #include <texsyn/subbands.h>
+#include <texsyn/surface.h>
 
 namespace texsyn::cli {
 
@@ -19,6 +20,7 @@ enum class ItemKind {
     Image,    ///< a 2-D image, scene-linear float
     Analysis, ///< a sample's statistics (an analysis file, or made by --analyze)
     Volume,   ///< a 3-D image (a solid texture), scene-linear, colour un-associated
+    Mesh,     ///< a textured mesh (SurfaceTexture); `buf` its UV bake's first tile, if any
 };
 
 /// One item on the stack.
@@ -26,6 +28,7 @@ struct StackItem {
     ItemKind kind = ItemKind::Image;
     OIIO::ImageBuf buf; ///< an image or a volume
     std::shared_ptr<const TextureStatistics> analysis;
+    std::shared_ptr<const SurfaceTexture> surface;
     std::vector<NamedImage> subbands; ///< filled when --subbands is on
 
     /// What to call it: the file name as given, or e.g. "pyramid synthesis of rust.png".
@@ -46,13 +49,16 @@ struct StackItem {
     std::string no_recipe;
 };
 
-/// "an image", "an analysis" or "a solid texture".
+/// "an image", "an analysis", "a solid texture" or "a textured mesh".
 const char* item_kind_text(ItemKind kind);
 
 /// What the result of `method` on inputs called `inputs` (file names without folders, or
 /// results' names) is called: "pyramid synthesis of rust.png", "analysis of rust.png",
 /// "cascade synthesis".
 std::string result_name(const Method& method, const std::vector<std::string>& inputs);
+
+/// The kind of item a method's result is (a report leaves its input: Image).
+ItemKind item_kind(MethodOutput output);
 
 /// "CMD : no current image (…)" or "CMD : needs N images on the stack, there are H":
 /// the message for a command that finds too few items.

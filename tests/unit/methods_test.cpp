@@ -59,8 +59,10 @@ TEST(Methods, EveryRowIsComplete)
         ASSERT_TRUE(m->run);
         const MethodOptions defaults = m->defaults();
         std::string error;
-        // The defaults are a working synthesis; a mix's mode must be chosen.
-        EXPECT_EQ(defaults.validate(error), m->name != "mix") << error;
+        // The defaults are a working synthesis; a mix's mode must be chosen, and the mesh
+        // a texture grows on.
+        EXPECT_EQ(defaults.validate(error), m->name != "mix" && m->name != "choosy-surface")
+            << error;
         EXPECT_EQ(m->inputs == MethodInputs::Samples, bool(m->count));
         if (m->count) {
             EXPECT_GE(m->count(defaults), 2);
@@ -81,11 +83,12 @@ TEST(Methods, EveryRowIsComplete)
         }
     }
     EXPECT_EQ(find_method("quilting"), nullptr);
-    // method_names() lists the rows that make recipes (images and volumes), in order.
+    // method_names() lists the rows that make recipes (images, volumes, UV bakes), in order.
     std::string recipes, all;
     for (const Method* m : methods()) {
         all += (all.empty() ? "" : "|") + m->name;
-        if (m->output == MethodOutput::Image || m->output == MethodOutput::Volume)
+        if (m->output == MethodOutput::Image || m->output == MethodOutput::Volume
+            || m->output == MethodOutput::Mesh)
             recipes += (recipes.empty() ? "" : "|") + m->name;
     }
     EXPECT_EQ(method_names(), recipes);

@@ -54,7 +54,8 @@ bool relinearize_sample(Sample& sample, const ColorConfig& colors, const std::st
 
 /// Reads the file of every input-file option of `options` that names one: ReadImage files
 /// like a sample (scene-linear, the space guessed from the file), ReadData files as their
-/// numbers. Fails (false, "<option>=<file> : <reason>").
+/// numbers; a ReadMesh file only has to exist (its method reads it). Fails (false,
+/// "<option>=<file> : <reason>").
 bool read_option_files(const MethodOptions& options, const ColorConfig& colors, OptionImages& files,
     std::string& error, int nthreads = 0);
 

@@ -34,6 +34,8 @@
 
 namespace texsyn {
 
+struct SurfaceTexture; // texsyn/surface.h
+
 /// A method's options, whatever the method: its options struct together with that struct's
 /// option table. Value semantics (copies are deep).
 class MethodOptions {
@@ -149,6 +151,9 @@ enum class MethodOutput {
     Volume,   ///< a 3-D image (solid texture)
     Analysis, ///< the statistics of its input (an analysis file's contents)
     Report,   ///< a text report on its input, which it leaves where it was
+    /// a triangle mesh with a colour per face (SurfaceTexture), and, if the mesh has UVs,
+    /// their bake as the image (the first UDIM tile's; every tile in the SurfaceTexture)
+    Mesh,
 };
 
 /// One input of a run: an image (scene-linear float) or an analysis.
@@ -169,10 +174,12 @@ struct RunSettings {
 
 /// What a run gives (MethodOutput says which member).
 struct MethodResult {
-    OIIO::ImageBuf image; ///< Image, or Volume (spec.depth slices); float, scene-linear
-    std::shared_ptr<TextureStatistics> analysis; ///< Analysis
-    std::string report;                          ///< Report
-    std::vector<NamedImage> subbands;            ///< with RunSettings::subbands
+    /// Image, Volume (spec.depth slices), or Mesh's bake; float, scene-linear
+    OIIO::ImageBuf image;
+    std::shared_ptr<TextureStatistics> analysis;   ///< Analysis
+    std::string report;                            ///< Report
+    std::shared_ptr<const SurfaceTexture> surface; ///< Mesh
+    std::vector<NamedImage> subbands;              ///< with RunSettings::subbands
     /// The images of the output-file options that name a file, by option name (e.g.
     /// "map", the source map), for the front end to write.
     std::vector<std::pair<std::string, OIIO::ImageBuf>> files;
@@ -246,10 +253,12 @@ struct Method {
     int input_count(const MethodOptions& options, int available) const;
     /// Whether input `index` of a run may be an analysis.
     bool accepts_analysis(int index) const;
-    /// Whether its result can be written as a recipe (an image or a volume).
+    /// Whether its result can be written as a recipe (an image, a volume, or a mesh's UV
+    /// bake).
     bool makes_recipes() const
     {
-        return output == MethodOutput::Image || output == MethodOutput::Volume;
+        return output == MethodOutput::Image || output == MethodOutput::Volume
+            || output == MethodOutput::Mesh;
     }
 };
 

@@ -42,6 +42,7 @@ enum class FileUse {
     None,      ///< not a file option
     ReadImage, ///< an image read like an input: converted to scene-linear
     ReadData,  ///< an image read as its numbers, with no colour conversion (control images)
+    ReadMesh,  ///< a triangle mesh (OBJ or PLY) the method reads itself
     Write,     ///< an image the method writes (e.g. a source map)
 };
 
@@ -239,7 +240,7 @@ public:
                 return T::table().apply(t, text, error);
             }));
     }
-    /// A file the method reads (`use` ReadImage or ReadData) or writes (Write; its name
+    /// A file the method reads (`use` ReadImage, ReadData or ReadMesh) or writes (Write; its name
     /// must end in `extension` if that is not empty); "" = none.
     OptionTable& file(
         const char* name, std::string T::*m, FileUse use, const char* extension, const char* help)

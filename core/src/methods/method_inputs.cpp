@@ -103,6 +103,8 @@ bool read_option_files(const MethodOptions& options, const ColorConfig& colors, 
             const std::string prefix = file + ": ";
             return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
         };
+        if (f.file == FileUse::ReadMesh)
+            continue; // the method reads it (its run checks it)
         if (f.file == FileUse::ReadImage) {
             Sample s;
             if (!read_sample(file, colors, "", s, why, nthreads) || s.analysis) {

@@ -18,6 +18,7 @@ const Method& mix_method();
 const Method& transfer_method();
 const Method& neighborhood_method();
 const Method& choosy_method();
+const Method& surface_method();
 const Method& patch_method();
 const Method& cascade_method();
 const Method& analyze_method();
@@ -33,6 +34,7 @@ const std::vector<const Method*>& methods()
         &detail::transfer_method(),
         &detail::neighborhood_method(),
         &detail::choosy_method(),
+        &detail::surface_method(),
         &detail::patch_method(),
         &detail::cascade_method(),
         &detail::analyze_method(),
@@ -131,8 +133,8 @@ bool run_method(const Method& method, const MethodOptions& options,
         }
     }
     for (const OptionField& f : options.table().fields())
-        if (f.type == OptionType::InputFile && !options.value(f.name).empty()
-            && !files.count(f.name)) {
+        if (f.type == OptionType::InputFile && f.file != FileUse::ReadMesh
+            && !options.value(f.name).empty() && !files.count(f.name)) {
             error = option_error(f.name, options.value(f.name), "the file was not read");
             return false;
         }

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: Apache-2.0
+// Castellanos & Williams on surfaces (issue #17): a texture grown directly on a triangle
+// mesh, face by face, with choosy sampling, and its bake into the mesh's UV texture.
+//
+// The mesh is read from an OBJ or PLY file (polygons become triangle fans) and must be one
+// connected, manifold surface with no zero-area faces; remesh= first makes its triangles
+// near-equilateral and near-uniform (§3.9) so that faces behave like pixels. Each of the
+// levels-1 subdivisions splits every face in four (modified butterfly, §3.4), so the
+// finest level has faces x 4^(levels-1) faces.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <texsyn/choosy.h>
+#include <texsyn/options.h>
+
+namespace texsyn {
+
+/// The options of --choosy-surface: the mesh, how to prepare it, the bake, and choosy
+/// sampling's options (levels, iterations, penalty, search, dims, eps; not size or
+/// isotropic: a surface has no size, and no global orientation, so the sample is always
+/// matched in six rotations, §3.8).
+struct SurfaceOptions {
+    ChoosyOptions options;
+    std::string mesh; ///< the OBJ or PLY file to grow the texture on
+    /// Faces of the isotropic remesh before subdivision; 0 = the input mesh as it is.
+    int remesh = 0;
+    /// The UV bake's size (each UDIM tile), if the mesh has UVs; 0x0 = no bake.
+    int bake_width = 1024;
+    int bake_height = 1024;
+
+    static const OptionTable<SurfaceOptions>& table();
+    /// Ranges, list lengths and the rules between options. False with a message.
+    bool validate(std::string& error) const;
+};
+
+/// A texture on a surface: the finest level's mesh with a colour per face, and, where the
+/// input mesh has UVs, those colours baked into one image per UDIM tile the UVs touch.
+struct SurfaceTexture {
+    std::vector<std::array<float, 3>> vertices;
+    std::vector<std::array<uint32_t, 3>> faces; ///< counter-clockwise seen from outside
+    std::vector<std::string> channelnames;      ///< the sample's
+    std::vector<std::vector<float>> colours;    ///< [channel][face], scene-linear
+    /// UDIM numbers (1001 + u tile + 10 v tile) and their bakes (float, scene-linear, the
+    /// sample's channels), in UDIM order; empty without UVs or with bake=0x0.
+    std::vector<std::pair<int, OIIO::ImageBuf>> bake;
+    size_t base_faces = 0;       ///< faces of the mesh synthesis started from (after remesh)
+    size_t colour_conflicts = 0; ///< §3.5: same-coloured adjacent base faces
+};
+
+/// Grows `sample` (scene-linear float; at least 2^levels pixels a side) on the mesh
+/// options.mesh with choosy sampling (Algorithms 1 and 2 on the face pyramid), and bakes
+/// it into the mesh's UVs. Refuses (false, one-line message naming the file or option)
+/// an unreadable or malformed mesh, a sample too small for the levels, NaN/Inf pixels,
+/// and work beyond the memory limit (before allocating it). Bit-identical for a seed
+/// whatever options.nthreads is.
+bool synthesize_surface(SurfaceTexture& out, const OIIO::ImageBuf& sample,
+    const SurfaceOptions& options, std::string& error);
+
+/// Writes `texture`'s mesh as a binary PLY (per-face float colours in scene-linear, named
+/// after its channels, plus 8-bit red/green/blue from `display_rgb`, one per face, for
+/// mesh viewers; may be null). Atomic; false with a message naming `path`.
+bool write_surface_ply(const std::string& path, const SurfaceTexture& texture,
+    const std::vector<std::array<uint8_t, 3>>* display_rgb, std::string& error);
+
+} // namespace texsyn

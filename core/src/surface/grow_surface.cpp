@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: Apache-2.0
+// synthesize_surface() (texsyn/surface.h): the mesh read, checked and optionally remeshed,
+// the texture grown on its face pyramid, and the result baked into its UVs.
+#include <texsyn/surface.h>
+
+#include "methods/method_helpers_pvt.h"
+#include "surface_mesh_pvt.h"
+#include "surface_synthesis_pvt.h"
+
+namespace texsyn {
+
+namespace {
+
+using detail::SurfaceMesh;
+
+// Bytes a synthesis of `finest` faces from a w x h sample of nc channels needs: the face
+// pyramid with its stencils and the synthesis values (about 450 bytes a finest face
+// measured on the cow at 1.5M faces, all levels included), and the sample's points in six
+// phases for the search.
+size_t surface_memory_estimate(double finest, int w, int h, int nc, const ChoosyOptions& opt)
+{
+    const double per_face = 400.0 + 24.0 * nc;
+    const double dim = 36.0 * nc;
+    const double per_point = opt.search == ChoosySearch::Exhaustive
+        ? dim
+        : 2.0 * std::min(dim, double(opt.dims)) + 2.0;
+    const double points = 2.0 * double(w) * double(h) * 6.0;
+    const double bytes = finest * per_face + 4.0 * points * per_point;
+    return bytes > 1e18 ? size_t(1e18) : size_t(bytes);
+}
+
+// The message of a mesh function without its leading "PATH: " (mesh= names the file).
+std::string mesh_error(const std::string& path, const std::string& message)
+{
+    const std::string prefix = path + ": ";
+    return option_error(
+        "mesh", path, message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message);
+}
+
+bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOptions& options,
+    std::string& error)
+{
+    if (!options.validate(error))
+        return false;
+    if (sample.has_error()) {
+        error = "sample: " + sample.geterror();
+        return false;
+    }
+    PlanarImage in;
+    if (!planes_from_imagebuf(sample, in, error))
+        return false;
+    const ChoosyOptions& opt = options.options;
+    const int side = 1 << opt.levels;
+    if (in.width() < side || in.height() < side) {
+        error = "levels=" + std::to_string(opt.levels) + " is too many for the sample ("
+            + std::to_string(in.width()) + "x" + std::to_string(in.height())
+            + "): each side must be at least " + std::to_string(side);
+        return false;
+    }
+
+    SurfaceMesh mesh;
+    std::string why;
+    if (!detail::read_surface_mesh(options.mesh, mesh, why)) {
+        error = mesh_error(options.mesh, why);
+        return false;
+    }
+    const size_t base_faces = options.remesh ? size_t(options.remesh) : mesh.faces.size();
+    const double finest = double(base_faces) * double(uint64_t(1) << (2 * (opt.levels - 1)));
+    const std::string what = "levels=" + std::to_string(opt.levels) + " on "
+        + std::to_string(base_faces) + " faces (" + std::to_string(uint64_t(finest))
+        + " at the finest level)";
+    if (finest > double(detail::kMaxMeshElements)) {
+        error = what + " : more than " + std::to_string(detail::kMaxMeshElements)
+            + " faces; use fewer levels or remesh= to fewer faces";
+        return false;
+    }
+    if (!check_memory(surface_memory_estimate(finest, in.width(), in.height(), in.nchannels(), opt),
+            what, error))
+        return false;
+    SurfaceMesh remeshed;
+    if (options.remesh && !detail::remesh_isotropic(mesh, size_t(options.remesh), remeshed, why)) {
+        error = option_error("remesh", std::to_string(options.remesh), why);
+        return false;
+    }
+    const SurfaceMesh& grown = options.remesh ? remeshed : mesh;
+    detail::FaceLevel base;
+    base.vertices = grown.vertices;
+    base.faces = grown.faces;
+    detail::finish_level(base);
+    detail::SurfaceSynthesis synthesis;
+    if (!detail::synthesize_on_surface(in.channels, std::move(base), opt, synthesis, error))
+        return false;
+
+    const detail::FaceLevel& level = synthesis.pyramid.levels.back();
+    out.vertices.resize(level.vertices.size());
+    for (size_t v = 0; v < level.vertices.size(); ++v)
+        out.vertices[v] = { level.vertices[v].x, level.vertices[v].y, level.vertices[v].z };
+    out.faces = level.faces;
+    out.channelnames = in.channel_names;
+    out.colours = std::move(synthesis.colours);
+    out.base_faces = synthesis.pyramid.levels.front().size();
+    out.colour_conflicts = synthesis.pyramid.colour_conflicts;
+    return true;
+}
+
+} // namespace
+
+bool synthesize_surface(SurfaceTexture& out, const OIIO::ImageBuf& sample,
+    const SurfaceOptions& options, std::string& error)
+{
+    out = SurfaceTexture();
+    const bool ok = detail::guarded(
+        error, "synthesize_surface", [&] { return grow(out, sample, options, error); });
+    if (!ok)
+        out = SurfaceTexture();
+    return ok;
+}
+
+bool write_surface_ply(const std::string& path, const SurfaceTexture& texture,
+    const std::vector<std::array<uint8_t, 3>>* display_rgb, std::string& error)
+{
+    std::vector<Imath::V3f> vertices(texture.vertices.size());
+    for (size_t v = 0; v < vertices.size(); ++v)
+        vertices[v] = { texture.vertices[v][0], texture.vertices[v][1], texture.vertices[v][2] };
+    std::vector<std::string> names;
+    for (const std::string& n : texture.channelnames) {
+        // PLY property names: letters, digits and '_' (e.g. "R" stays, "diffuse.R" becomes
+        // "diffuse_R").
+        std::string s = n;
+        for (char& c : s)
+            if (!std::isalnum(static_cast<unsigned char>(c)))
+                c = '_';
+        names.push_back(s);
+    }
+    return detail::guarded(error, "write_surface_ply", [&] {
+        return detail::write_face_colour_ply(
+            path, vertices, texture.faces, texture.colours, names, display_rgb, error);
+    });
+}
+
+} // namespace texsyn
