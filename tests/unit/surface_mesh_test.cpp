@@ -126,7 +126,9 @@ TEST_F(SurfaceMeshTest, BundledMeshesReadWithTheirCountsAndTopology)
     for (const Expected& e :
         { Expected { "sphere.obj", 812, 1620, 0, 2 }, Expected { "cow.obj", 2904, 5804, 0, 2 },
             Expected { "mushroom.obj", 2337, 4608, 1, 1 },
-            Expected { "torus_uv.obj", 1152, 2304, 0, 0 } }) {
+            Expected { "torus_uv.obj", 1152, 2304, 0, 0 },
+            Expected { "knot.obj", 3200, 6400, 0, 0 },
+            Expected { "plane_grid.obj", 4225, 8192, 1, 1 } }) {
         const SurfaceMesh mesh = bundled(e.name);
         EXPECT_EQ(mesh.vertices.size(), e.vertices) << e.name;
         EXPECT_EQ(mesh.faces.size(), e.faces) << e.name;

@@ -3,7 +3,6 @@
 // face-domain filters, the 2-distant stencil, and Algorithm 1 on a flat grid and a sphere.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include <OpenImageIO/Imath.h>
 
@@ -14,6 +13,7 @@
 #include "surface/surface_choosy_pvt.h"
 #include "surface/surface_synthesis_pvt.h"
 
+#include "test_metrics.h"
 #include "test_samples.h"
 
 using namespace texsyn;
@@ -51,26 +51,6 @@ FaceLevel icosphere(int times)
 FaceValues constant_values(size_t n, float value)
 {
     return FaceValues(1, std::vector<float>(n, value));
-}
-
-// Area-weighted Wasserstein-1 distance between the face values of a channel and the
-// pixel values of a plane (both as distributions).
-double wasserstein(const std::vector<float>& faces, const std::vector<float>& areas, const Plane& p)
-{
-    std::vector<size_t> order(faces.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return faces[a] < faces[b]; });
-    std::vector<float> pixels(p.data(), p.data() + p.size());
-    std::sort(pixels.begin(), pixels.end());
-    const double total = std::accumulate(areas.begin(), areas.end(), 0.0);
-    double w1 = 0.0, mass = 0.0;
-    for (size_t i : order) {
-        const double q = (mass + 0.5 * areas[i]) / total; // this face's quantile
-        mass += areas[i];
-        const float sample = pixels[std::min(pixels.size() - 1, size_t(q * double(pixels.size())))];
-        w1 += double(areas[i]) / total * std::abs(double(faces[i]) - double(sample));
-    }
-    return w1;
 }
 
 } // namespace
@@ -222,7 +202,7 @@ TEST(SurfaceSynthesis, SphereKeepsTheSamplesHistogram)
     ASSERT_EQ(out.colours.size(), sample.size());
     ASSERT_EQ(out.colours[0].size(), finest.size());
     for (size_t c = 0; c < sample.size(); ++c)
-        EXPECT_LT(wasserstein(out.colours[c], finest.area, sample[c]), 0.02) << c;
+        EXPECT_LT(area_weighted_w1(out.colours[c], finest.area, sample[c]), 0.02) << c;
 }
 
 TEST(SurfaceSynthesis, SameSeedSameColoursAtAnyThreadCount)

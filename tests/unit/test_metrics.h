@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
+#include <vector>
 
 #include <OpenImageIO/hash.h>
 
@@ -54,6 +56,28 @@ inline double seam_ratio(const OIIO::ImageBuf& buf)
                 (y == h - 1 ? nseam : ninner) += 1;
             }
     return (seam / double(nseam)) / (inner / double(ninner));
+}
+
+/// Area-weighted Wasserstein-1 distance between the values of a channel on mesh faces
+/// (each face weighing its area) and the pixel values of a plane, both as distributions:
+/// each face is compared with the pixel at its mid-area quantile.
+inline double area_weighted_w1(
+    const std::vector<float>& faces, const std::vector<float>& areas, const Plane& p)
+{
+    std::vector<size_t> order(faces.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return faces[a] < faces[b]; });
+    std::vector<float> pixels(p.data(), p.data() + p.size());
+    std::sort(pixels.begin(), pixels.end());
+    const double total = std::accumulate(areas.begin(), areas.end(), 0.0);
+    double w1 = 0.0, mass = 0.0;
+    for (size_t i : order) {
+        const double q = (mass + 0.5 * areas[i]) / total; // this face's quantile
+        mass += areas[i];
+        const float sample = pixels[std::min(pixels.size() - 1, size_t(q * double(pixels.size())))];
+        w1 += double(areas[i]) / total * std::abs(double(faces[i]) - double(sample));
+    }
+    return w1;
 }
 
 } // namespace texsyn::test
