@@ -3,6 +3,7 @@
 // the texture grown on its face pyramid, and the result baked into its UVs.
 #include <texsyn/surface.h>
 
+#include "face_stencil_pvt.h"
 #include "methods/method_helpers_pvt.h"
 #include "surface_mesh_pvt.h"
 #include "surface_synthesis_pvt.h"
@@ -29,6 +30,23 @@ size_t surface_memory_estimate(double finest, int w, int h, int nc, const Choosy
     return bytes > 1e18 ? size_t(1e18) : size_t(bytes);
 }
 
+// Whether a w x h sample, cropped to a multiple of 2^(levels-1), has a whole 2-distant
+// neighbourhood at its coarsest level on one of its two analysis grids (§3.8, §3.12): the
+// coarsest level is the grid of the sample shrunk 2^(levels-1) times.
+bool sample_fits_levels(int w, int h, int levels)
+{
+    const int unit = 1 << (levels - 1);
+    for (const auto& [gw, gh] : { std::pair(w / unit, h / unit), std::pair(h / unit, w / unit) }) {
+        if (gw < 1 || gh < 1)
+            continue;
+        const detail::FacePyramid grid = detail::triangular_grid(gw, gh, 1);
+        for (const auto& slots : detail::face_stencils(grid.levels[0], 1))
+            if (detail::complete(slots))
+                return true;
+    }
+    return false;
+}
+
 // The message of a mesh function without its leading "PATH: " (mesh= names the file).
 std::string mesh_error(const std::string& path, const std::string& message)
 {
@@ -50,11 +68,11 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     if (!planes_from_imagebuf(sample, in, error))
         return false;
     const ChoosyOptions& opt = options.options;
-    const int side = 1 << opt.levels;
-    if (in.width() < side || in.height() < side) {
+    if (!sample_fits_levels(in.width(), in.height(), opt.levels)) {
         error = "levels=" + std::to_string(opt.levels) + " is too many for the sample ("
             + std::to_string(in.width()) + "x" + std::to_string(in.height())
-            + "): each side must be at least " + std::to_string(side);
+            + "): it needs about 7 x 2^(levels-1) = " + std::to_string(7 << (opt.levels - 1))
+            + " pixels a side";
         return false;
     }
 
