@@ -29,8 +29,12 @@ const OptionTable<SurfaceOptions>& SurfaceOptions::table()
             "triangles), one connected manifold surface; UVs (OBJ vt, PLY u v) allow a bake");
         t.include(&O::options, surface_choosy_table(),
             { { "levels",
-                "face pyramid levels: the finest has the mesh's faces x 4^(levels-1), each "
-                "the size of one sample pixel; the sample needs 2^levels pixels a side" } });
+                  "face pyramid levels: the finest has the mesh's faces x 4^(levels-1), each "
+                  "the size of one sample pixel; the sample needs about 7 x 2^(levels-1) "
+                  "pixels a side" },
+                { "dims",
+                    "kdtree: principal components kept of the 36-face neighbourhoods (36 x "
+                    "channels or more = all: exact)" } });
         t.integer("remesh", &O::remesh, 0, 50'000'000,
             "first remesh isotropically to about this many near-equilateral faces of equal "
             "size, so that faces behave like pixels (0 = grow on the mesh as it is)");
