@@ -23,6 +23,7 @@ cp "$repo/data/samples/wood_grain.png" wood_grain.png
 cp "$repo/data/samples/tiles_green.png" tiles.png
 cp "$repo/data/samples/weave_green.png" weave.png
 cp "$repo/ocio-configs/config.ocio" studio.ocio
+cp "$repo/data/meshes/cow.obj" "$repo/data/meshes/torus_uv.obj" "$repo/data/meshes/sphere.obj" .
 oiiotool "$repo/data/samples/stucco_yellow.png" -d uint16 -o scan.tif
 mkdir -p build && ln -s "$plugins" build/plugins  # the README's build-tree plugin path
 
