@@ -52,6 +52,9 @@ struct SurfaceTexture {
     std::vector<std::pair<int, OIIO::ImageBuf>> bake;
     size_t base_faces = 0;       ///< faces of the mesh synthesis started from (after remesh)
     size_t colour_conflicts = 0; ///< §3.5: same-coloured adjacent base faces
+    /// The base faces' largest area over their smallest: far above 1, faces stop behaving
+    /// like pixels (remesh= evens them).
+    double area_ratio = 1.0;
 };
 
 /// Grows `sample` (scene-linear float; at least 2^levels pixels a side) on the mesh

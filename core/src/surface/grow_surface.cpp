@@ -3,6 +3,9 @@
 // the texture grown on its face pyramid, and the result baked into its UVs.
 #include <texsyn/surface.h>
 
+#include <algorithm>
+#include <cctype>
+
 #include "face_stencil_pvt.h"
 #include "methods/method_helpers_pvt.h"
 #include "surface_mesh_pvt.h"
@@ -118,6 +121,9 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     out.colours = std::move(synthesis.colours);
     out.base_faces = synthesis.pyramid.levels.front().size();
     out.colour_conflicts = synthesis.pyramid.colour_conflicts;
+    const std::vector<float>& areas = synthesis.pyramid.levels.front().area;
+    const auto [smallest, largest] = std::minmax_element(areas.begin(), areas.end());
+    out.area_ratio = *smallest > 0.0f ? double(*largest) / double(*smallest) : 0.0;
     return true;
 }
 

@@ -4,6 +4,8 @@
 #include <texsyn/methods.h>
 #include <texsyn/surface.h>
 
+#include <cstdio>
+
 #include "methods/method_helpers_pvt.h"
 #include "surface_mesh_pvt.h"
 
@@ -31,6 +33,15 @@ bool run_surface(const MethodOptions& options, const std::vector<MethodInput>& i
         + (texture->bake.empty() ? std::string()
                                  : ", baked into " + std::to_string(texture->bake.size())
                     + " UDIM tile" + (texture->bake.size() == 1 ? "" : "s"));
+    // Uneven faces blur and slow the synthesis (the filters' sigma is the largest distance
+    // between adjacent faces): say how to even them.
+    if (texture->area_ratio > 100.0 && !opt.remesh) {
+        char ratio[32];
+        std::snprintf(ratio, sizeof ratio, "%.0f", texture->area_ratio);
+        result.notes += "; WARNING: its faces differ " + std::string(ratio)
+            + "x in area, so they do not behave like pixels: remesh=N evens them "
+              "(docs/surfaces.md)";
+    }
     result.surface = std::move(texture);
     return true;
 }
