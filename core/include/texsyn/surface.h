@@ -50,6 +50,7 @@ struct SurfaceTexture {
     /// UDIM numbers (1001 + u tile + 10 v tile) and their bakes (float, scene-linear, the
     /// sample's channels), in UDIM order; empty without UVs or with bake=0x0.
     std::vector<std::pair<int, OIIO::ImageBuf>> bake;
+    double bake_coverage = 0.0;  ///< the share of the bake's texels inside the UV layout
     size_t base_faces = 0;       ///< faces of the mesh synthesis started from (after remesh)
     size_t colour_conflicts = 0; ///< §3.5: same-coloured adjacent base faces
     /// The base faces' largest area over their smallest: far above 1, faces stop behaving

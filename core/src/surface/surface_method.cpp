@@ -4,7 +4,10 @@
 #include <texsyn/methods.h>
 #include <texsyn/surface.h>
 
+#include <cmath>
 #include <cstdio>
+
+#include <OpenImageIO/filesystem.h>
 
 #include "methods/method_helpers_pvt.h"
 #include "surface_mesh_pvt.h"
@@ -24,15 +27,18 @@ bool run_surface(const MethodOptions& options, const std::vector<MethodInput>& i
     for (auto& [udim, image] : texture->bake) {
         tag_synthesis(image.specmod(), "choosy-surface", settings.seed, options.format());
         image.specmod().attribute("synth:udim", udim);
+        image.specmod().attribute("synth:sample", OIIO::Filesystem::filename(inputs[0].name));
     }
     if (!texture->bake.empty())
         result.image = texture->bake.front().second;
     const size_t faces = texture->faces.size();
     result.notes = std::to_string(faces) + " faces from " + std::to_string(texture->base_faces)
-        + " (" + std::to_string(texture->colour_conflicts) + " same-coloured adjacent base faces)"
-        + (texture->bake.empty() ? std::string()
-                                 : ", baked into " + std::to_string(texture->bake.size())
-                    + " UDIM tile" + (texture->bake.size() == 1 ? "" : "s"));
+        + " (" + std::to_string(texture->colour_conflicts) + " same-coloured adjacent base faces)";
+    if (const size_t tiles = texture->bake.size())
+        result.notes += ", baked into " + std::to_string(tiles) + " UDIM tile"
+            + (tiles == 1 ? "" : "s") + " ("
+            + std::to_string(int(std::lround(texture->bake_coverage * 100.0)))
+            + "% of the texels inside the UV layout, the rest padded)";
     // Uneven faces blur and slow the synthesis (the filters' sigma is the largest distance
     // between adjacent faces): say how to even them.
     if (texture->area_ratio > 100.0 && !opt.remesh) {
@@ -93,7 +99,7 @@ const Method& surface_method()
             "when the UVs span several UDIM tiles. remesh=N first makes N near-equilateral "
             "faces.",
             "texsyn data/samples/flowers.png --choosy-surface:mesh=data/meshes/"
-            "torus_uv.obj:levels=3 -o torus_flowers.ply",
+            "torus_uv.obj:levels=3:bake=256x256 -o torus_flowers.ply -o torus_flowers.png",
             "any texture, on a mesh instead of a plane" };
         row.layout = surface_layout;
         return row;
