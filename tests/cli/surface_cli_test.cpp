@@ -146,7 +146,8 @@ TEST_F(SurfaceCli, BadSettingsAreRefusedBeforeTheWork)
         "needs about 7 x 2^(levels-1) = 896 pixels a side",
         in);
     expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:remesh=3 -o out.ply",
-        "texsyn ERROR: --choosy-surface : remesh=3 : expected 0 (no remesh) or 8 and more faces",
+        "texsyn ERROR: --choosy-surface : remesh=3 : expected 0 (no remesh), 8 and more faces, "
+        "or auto",
         in);
     expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:isotropic=1 -o out.ply",
         "texsyn ERROR: --choosy-surface : isotropic=1 : unknown option (known: mesh, levels, "
@@ -254,4 +255,26 @@ TEST_F(SurfaceCli, RecipesOpenAsTheBake)
     r = shell("iinfo 'flowers.png.texsyn?method=choosy-surface&mesh=sphere.obj'");
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("mesh=sphere.obj : has no UVs"), std::string::npos) << r.err;
+}
+
+// remesh=auto remeshes an uneven mesh (the cow) to its own face count and keeps an even
+// one (the sphere); remesh=0 keeps the cow, with a warning.
+TEST_F(SurfaceCli, UnevenMeshesAreRemeshedUnlessTold)
+{
+    fs::copy_file(mesh_path("cow.obj"), dir / "cow.obj");
+    CliRun r = texsyn("-v flowers.png --choosy-surface:mesh=cow.obj:levels=1 -o cow.ply");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("remesh=auto: the mesh's face areas differ 82x (99th over 1st "
+                         "percentile), so it was remeshed to about 5804 even faces first"),
+        std::string::npos)
+        << r.err;
+    r = texsyn("-v flowers.png --choosy-surface:mesh=cow.obj:levels=1:remesh=0 -o cow0.ply");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("5804 faces from 5804"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("WARNING: the mesh's face areas differ 82x"), std::string::npos) << r.err;
+    r = texsyn("-v flowers.png --choosy-surface:mesh=sphere.obj:levels=1 -o sphere.ply");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("1620 faces from 1620 (54 same-coloured adjacent base faces)\n"),
+        std::string::npos)
+        << r.err;
 }

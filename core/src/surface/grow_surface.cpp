@@ -52,6 +52,23 @@ bool sample_fits_levels(int w, int h, int levels)
     return false;
 }
 
+// The 99th percentile of the faces' areas over the 1st (1 for an even mesh).
+double face_area_spread(const SurfaceMesh& mesh)
+{
+    std::vector<double> areas(mesh.faces.size());
+    for (size_t f = 0; f < areas.size(); ++f) {
+        const auto& c = mesh.faces[f];
+        const Imath::V3d a(mesh.vertices[c[0]]), b(mesh.vertices[c[1]]), d(mesh.vertices[c[2]]);
+        areas[f] = 0.5 * ((b - a) % (d - a)).length();
+    }
+    const size_t n = areas.size();
+    const size_t lo = n / 100, hi = std::min(n - 1, n * 99 / 100);
+    std::nth_element(areas.begin(), areas.begin() + long(lo), areas.end());
+    const double small = areas[lo];
+    std::nth_element(areas.begin(), areas.begin() + long(hi), areas.end());
+    return small > 0.0 ? areas[hi] / small : 0.0;
+}
+
 // The message of a mesh function without its leading "PATH: " (mesh= names the file).
 std::string mesh_error(const std::string& path, const std::string& message)
 {
@@ -87,7 +104,11 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
         error = mesh_error(options.mesh, why);
         return false;
     }
-    const size_t base_faces = options.remesh ? size_t(options.remesh) : mesh.faces.size();
+    const double spread = face_area_spread(mesh);
+    const size_t remesh_to = options.remesh ? size_t(*options.remesh)
+        : spread > kUnevenFaceAreas         ? mesh.faces.size()
+                                            : 0;
+    const size_t base_faces = remesh_to ? remesh_to : mesh.faces.size();
     const double finest = double(base_faces) * double(uint64_t(1) << (2 * (opt.levels - 1)));
     const std::string what = "levels=" + std::to_string(opt.levels) + " on "
         + std::to_string(base_faces) + " faces (" + std::to_string(uint64_t(finest))
@@ -136,11 +157,12 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     }
 
     SurfaceMesh remeshed;
-    if (options.remesh && !detail::remesh_isotropic(mesh, size_t(options.remesh), remeshed, why)) {
-        error = option_error("remesh", std::to_string(options.remesh), why);
+    if (remesh_to && !detail::remesh_isotropic(mesh, remesh_to, remeshed, why)) {
+        error = option_error(
+            "remesh", options.remesh ? std::to_string(*options.remesh) : "auto", why);
         return false;
     }
-    const SurfaceMesh& grown = options.remesh ? remeshed : mesh;
+    const SurfaceMesh& grown = remesh_to ? remeshed : mesh;
     detail::FaceLevel base;
     base.vertices = grown.vertices;
     base.faces = grown.faces;
@@ -154,7 +176,7 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
         detail::UvBakeOptions settings;
         settings.width = options.bake_width;
         settings.height = options.bake_height;
-        settings.base_is_uv_mesh = options.remesh == 0;
+        settings.base_is_uv_mesh = remesh_to == 0;
         settings.nthreads = opt.nthreads;
         detail::UvBake baked;
         if (!detail::bake_uv_texture(
@@ -183,9 +205,8 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     out.colours = std::move(synthesis.colours);
     out.base_faces = synthesis.pyramid.levels.front().size();
     out.colour_conflicts = synthesis.pyramid.colour_conflicts;
-    const std::vector<float>& areas = synthesis.pyramid.levels.front().area;
-    const auto [smallest, largest] = std::minmax_element(areas.begin(), areas.end());
-    out.area_ratio = *smallest > 0.0f ? double(*largest) / double(*smallest) : 0.0;
+    out.area_spread = spread;
+    out.remeshed_to = remesh_to;
     return true;
 }
 

@@ -41,13 +41,16 @@ bool run_surface(const MethodOptions& options, const std::vector<MethodInput>& i
             + "% of the texels inside the UV layout, the rest padded)";
     // Uneven faces blur and slow the synthesis (the filters' sigma is the largest distance
     // between adjacent faces): say how to even them.
-    if (texture->area_ratio > 100.0 && !opt.remesh) {
-        char ratio[32];
-        std::snprintf(ratio, sizeof ratio, "%.0f", texture->area_ratio);
-        result.notes += "; WARNING: its faces differ " + std::string(ratio)
-            + "x in area, so they do not behave like pixels: remesh=N evens them "
+    char spread[32];
+    std::snprintf(spread, sizeof spread, "%.0f", texture->area_spread);
+    if (texture->remeshed_to && !opt.remesh)
+        result.notes += "; remesh=auto: the mesh's face areas differ " + std::string(spread)
+            + "x (99th over 1st percentile), so it was remeshed to about "
+            + std::to_string(texture->remeshed_to) + " even faces first (remesh=0 keeps it)";
+    else if (texture->area_spread > kUnevenFaceAreas && !texture->remeshed_to)
+        result.notes += "; WARNING: the mesh's face areas differ " + std::string(spread)
+            + "x, so its faces do not behave like pixels: remesh=N evens them "
               "(docs/surfaces.md)";
-    }
     result.surface = std::move(texture);
     return true;
 }
@@ -96,8 +99,8 @@ const Method& surface_method()
             "is the subdivided mesh with a colour per face: -o NAME.ply writes it (float "
             "scene-linear colours and 8-bit sRGB for viewers); if the mesh has UVs, -o "
             "NAME.exr (or .png, .tif) writes its UV bake at bake=WxH, with NAME_<UDIM>.exr "
-            "when the UVs span several UDIM tiles. remesh=N first makes N near-equilateral "
-            "faces.",
+            "when the UVs span several UDIM tiles. A mesh of uneven faces is first remeshed to "
+            "as many even ones (remesh=auto); remesh=N makes N, remesh=0 keeps the mesh.",
             "texsyn data/samples/flowers.png --choosy-surface:mesh=data/meshes/"
             "torus_uv.obj:levels=3:bake=256x256 -o torus_flowers.ply -o torus_flowers.png",
             "any texture, on a mesh instead of a plane" };
