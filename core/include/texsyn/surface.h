@@ -23,9 +23,19 @@
 
 namespace texsyn {
 
-/// remesh=auto remeshes a mesh whose face areas' 99th percentile exceeds its 1st by more
-/// than this (the classic cow: 82; CGAL's mushroom: 16; even meshes: below 3).
-constexpr double kUnevenFaceAreas = 8.0;
+/// remesh=auto keeps meshes of fewer faces than this.
+constexpr size_t kAutoRemeshFaces = 100;
+
+/// How far a mesh's faces are from the equal, equilateral faces the method assumes (its
+/// stencils are laid out for equilateral faces, its filters for equal ones).
+struct FaceShapes {
+    double area_spread = 1.0;  ///< face areas, 99th percentile over 1st
+    double angle_spread = 0.0; ///< median over faces of largest minus smallest angle, degrees
+    /// What remesh=auto keeps: areas within 8x and angles within 25 degrees (CGAL's sphere:
+    /// 1.5x, 4 degrees). The classic cow (82x, 62 degrees) and grids of right triangles
+    /// (45 degrees, which grow streaks along their diagonals) are remeshed.
+    bool even() const { return area_spread <= 8.0 && angle_spread <= 25.0; }
+};
 
 /// The options of --choosy-surface: the mesh, how to prepare it, the bake, and choosy
 /// sampling's options (levels, iterations, penalty, search, dims, eps; not size or
@@ -35,8 +45,9 @@ struct SurfaceOptions {
     ChoosyOptions options;
     std::string mesh; ///< the OBJ or PLY file to grow the texture on
     /// Faces of the isotropic remesh before subdivision; 0 = the input mesh as it is; unset
-    /// ("auto") = remesh to the input's face count if its faces are uneven
-    /// (kUnevenFaceAreas), else keep it.
+    /// ("auto") = remesh to the input's face count unless its faces are even
+    /// (FaceShapes::even()) or fewer than kAutoRemeshFaces (a coarse cage, which the
+    /// subdivisions refine).
     std::optional<int> remesh;
     /// The UV bake's size (each UDIM tile), if the mesh has UVs; 0x0 = no bake.
     int bake_width = 1024;
@@ -60,10 +71,8 @@ struct SurfaceTexture {
     double bake_coverage = 0.0;  ///< the share of the bake's texels inside the UV layout
     size_t base_faces = 0;       ///< faces of the mesh synthesis started from (after remesh)
     size_t colour_conflicts = 0; ///< §3.5: same-coloured adjacent base faces
-    /// The input mesh's face areas, 99th percentile over 1st: far above 1, faces stop
-    /// behaving like pixels (remesh evens them).
-    double area_spread = 1.0;
-    size_t remeshed_to = 0; ///< the remesh's target face count; 0 = not remeshed
+    FaceShapes input_shapes;     ///< the input mesh's faces
+    size_t remeshed_to = 0;      ///< the remesh's target face count; 0 = not remeshed
 };
 
 /// Grows `sample` (scene-linear float; at least 2^levels pixels a side) on the mesh

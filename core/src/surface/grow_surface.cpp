@@ -52,21 +52,37 @@ bool sample_fits_levels(int w, int h, int levels)
     return false;
 }
 
-// The 99th percentile of the faces' areas over the 1st (1 for an even mesh).
-double face_area_spread(const SurfaceMesh& mesh)
+// The value at fraction `q` (0..1) of `values`' sorted order (reorders them).
+double quantile(std::vector<double>& values, double q)
 {
-    std::vector<double> areas(mesh.faces.size());
-    for (size_t f = 0; f < areas.size(); ++f) {
+    const size_t at = std::min(values.size() - 1, size_t(q * double(values.size())));
+    std::nth_element(values.begin(), values.begin() + long(at), values.end());
+    return values[at];
+}
+
+FaceShapes face_shapes(const SurfaceMesh& mesh)
+{
+    const size_t n = mesh.faces.size();
+    std::vector<double> areas(n), angles(n);
+    for (size_t f = 0; f < n; ++f) {
         const auto& c = mesh.faces[f];
-        const Imath::V3d a(mesh.vertices[c[0]]), b(mesh.vertices[c[1]]), d(mesh.vertices[c[2]]);
-        areas[f] = 0.5 * ((b - a) % (d - a)).length();
+        const Imath::V3d p[3] = { Imath::V3d(mesh.vertices[c[0]]), Imath::V3d(mesh.vertices[c[1]]),
+            Imath::V3d(mesh.vertices[c[2]]) };
+        areas[f] = 0.5 * ((p[1] - p[0]) % (p[2] - p[0])).length();
+        double lo = 180.0, hi = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const Imath::V3d u = (p[(k + 1) % 3] - p[k]).normalized();
+            const Imath::V3d v = (p[(k + 2) % 3] - p[k]).normalized();
+            const double a = std::acos(std::clamp(u ^ v, -1.0, 1.0)) * 180.0 / M_PI;
+            lo = std::min(lo, a), hi = std::max(hi, a);
+        }
+        angles[f] = hi - lo;
     }
-    const size_t n = areas.size();
-    const size_t lo = n / 100, hi = std::min(n - 1, n * 99 / 100);
-    std::nth_element(areas.begin(), areas.begin() + long(lo), areas.end());
-    const double small = areas[lo];
-    std::nth_element(areas.begin(), areas.begin() + long(hi), areas.end());
-    return small > 0.0 ? areas[hi] / small : 0.0;
+    FaceShapes shapes;
+    const double small = quantile(areas, 0.01);
+    shapes.area_spread = small > 0.0 ? quantile(areas, 0.99) / small : 0.0;
+    shapes.angle_spread = quantile(angles, 0.5);
+    return shapes;
 }
 
 // The message of a mesh function without its leading "PATH: " (mesh= names the file).
@@ -104,10 +120,10 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
         error = mesh_error(options.mesh, why);
         return false;
     }
-    const double spread = face_area_spread(mesh);
-    const size_t remesh_to = options.remesh ? size_t(*options.remesh)
-        : spread > kUnevenFaceAreas         ? mesh.faces.size()
-                                            : 0;
+    const FaceShapes shapes = face_shapes(mesh);
+    const size_t remesh_to = options.remesh                     ? size_t(*options.remesh)
+        : shapes.even() || mesh.faces.size() < kAutoRemeshFaces ? 0
+                                                                : mesh.faces.size();
     const size_t base_faces = remesh_to ? remesh_to : mesh.faces.size();
     const double finest = double(base_faces) * double(uint64_t(1) << (2 * (opt.levels - 1)));
     const std::string what = "levels=" + std::to_string(opt.levels) + " on "
@@ -205,7 +221,7 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     out.colours = std::move(synthesis.colours);
     out.base_faces = synthesis.pyramid.levels.front().size();
     out.colour_conflicts = synthesis.pyramid.colour_conflicts;
-    out.area_spread = spread;
+    out.input_shapes = shapes;
     out.remeshed_to = remesh_to;
     return true;
 }

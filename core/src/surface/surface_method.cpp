@@ -39,18 +39,20 @@ bool run_surface(const MethodOptions& options, const std::vector<MethodInput>& i
             + (tiles == 1 ? "" : "s") + " ("
             + std::to_string(int(std::lround(texture->bake_coverage * 100.0)))
             + "% of the texels inside the UV layout, the rest padded)";
-    // Uneven faces blur and slow the synthesis (the filters' sigma is the largest distance
-    // between adjacent faces): say how to even them.
-    char spread[32];
-    std::snprintf(spread, sizeof spread, "%.0f", texture->area_spread);
+    // Uneven faces blur the texture and slow the synthesis (the filters' sigma is the
+    // largest distance between adjacent faces), skewed ones streak it: say what was done.
+    const FaceShapes& shapes = texture->input_shapes;
+    char uneven[128];
+    std::snprintf(uneven, sizeof uneven,
+        "the mesh's faces are far from equal, equilateral triangles (areas %.0fx apart, "
+        "angles %.0f degrees apart at the median)",
+        shapes.area_spread, shapes.angle_spread);
     if (texture->remeshed_to && !opt.remesh)
-        result.notes += "; remesh=auto: the mesh's face areas differ " + std::string(spread)
-            + "x (99th over 1st percentile), so it was remeshed to about "
+        result.notes += "; remesh=auto: " + std::string(uneven) + ", so it was remeshed to about "
             + std::to_string(texture->remeshed_to) + " even faces first (remesh=0 keeps it)";
-    else if (texture->area_spread > kUnevenFaceAreas && !texture->remeshed_to)
-        result.notes += "; WARNING: the mesh's face areas differ " + std::string(spread)
-            + "x, so its faces do not behave like pixels: remesh=N evens them "
-              "(docs/surfaces.md)";
+    else if (!shapes.even() && !texture->remeshed_to)
+        result.notes += "; WARNING: " + std::string(uneven)
+            + ", so they do not behave like pixels: remesh=N evens them (docs/surfaces.md)";
     result.surface = std::move(texture);
     return true;
 }
