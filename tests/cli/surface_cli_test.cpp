@@ -3,6 +3,8 @@
 // meshes and settings refused with one line, exit 1 and no output.
 #include <cstring>
 
+#include <OpenImageIO/imagebufalgo.h>
+
 #include <gtest/gtest.h>
 
 #include "cli_fixture.h"
@@ -144,7 +146,8 @@ TEST_F(SurfaceCli, BadSettingsAreRefusedBeforeTheWork)
         "needs about 7 x 2^(levels-1) = 896 pixels a side",
         in);
     expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:remesh=3 -o out.ply",
-        "texsyn ERROR: --choosy-surface : remesh=3 : expected 0 (no remesh) or 8 and more faces",
+        "texsyn ERROR: --choosy-surface : remesh=3 : expected 0 (no remesh), 8 and more faces, "
+        "or auto",
         in);
     expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:isotropic=1 -o out.ply",
         "texsyn ERROR: --choosy-surface : isotropic=1 : unknown option (known: mesh, levels, "
@@ -185,4 +188,93 @@ TEST_F(SurfaceCli, NeverOverwritesTheMesh)
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.first_err_line().find("-o base.ply"), std::string::npos) << r.err;
     EXPECT_EQ(slurp(dir / "base.ply"), before);
+}
+
+// A mesh with UVs: an image -o receives the UV bake (bake=WxH), tagged like every output,
+// in the same run as the PLY.
+TEST_F(SurfaceCli, BakesTheUvTexture)
+{
+    fs::copy_file(mesh_path("torus_uv.obj"), dir / "torus_uv.obj");
+    CliRun r = texsyn("-v flowers.png --choosy-surface:mesh=torus_uv.obj:levels=3:bake=96x64 -o "
+                      "torus.ply -o torus.exr -o torus.png");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("baked into 1 UDIM tile (100% of the texels"), std::string::npos) << r.err;
+    OIIO::ImageBuf exr = read("torus.exr");
+    const OIIO::ImageSpec& spec = exr.spec();
+    EXPECT_EQ(spec.width, 96);
+    EXPECT_EQ(spec.height, 64);
+    EXPECT_EQ(spec.channelnames, (std::vector<std::string> { "R", "G", "B" }));
+    EXPECT_EQ(spec.get_string_attribute("synth:method"), "choosy-surface");
+    EXPECT_EQ(spec.get_string_attribute("synth:sample"), "flowers.png");
+    EXPECT_EQ(spec.get_int_attribute("synth:udim"), 1001);
+    // The bake's values are the faces' colours, interpolated: within the PLY's range.
+    const auto stats = OIIO::ImageBufAlgo::computePixelStats(exr);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_GE(stats.min[c], 0.0f);
+        EXPECT_LE(stats.max[c], 1.0f);
+        EXPECT_GT(stats.stddev[c], 0.02f) << "a texture, not a flat colour";
+    }
+    EXPECT_EQ(read("torus.png").spec().width, 96);
+    EXPECT_TRUE(fs::exists(dir / "torus.ply"));
+}
+
+// UVs over several UDIM tiles: one file per tile, named by <UDIM>; a name without it is
+// refused (and nothing is written).
+TEST_F(SurfaceCli, UdimTilesNeedUdimInTheName)
+{
+    // A tetrahedron whose first two faces lie in tile 1001 and the other two in 1002.
+    spit(dir / "tetra.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+        "vt 0.1 0.1\nvt 0.9 0.1\nvt 0.1 0.9\nvt 1.1 0.1\nvt 1.9 0.1\nvt 1.1 0.9\n"
+        "f 1/1 3/2 2/3\nf 1/1 2/2 4/3\nf 2/4 3/5 4/6\nf 3/4 1/5 4/6\n");
+    const std::string run = "flowers.png --choosy-surface:mesh=tetra.obj:levels=2:bake=32x32 ";
+    CliRun r = texsyn(run + "-o tetra.exr");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.first_err_line(),
+        "texsyn ERROR: -o tetra.exr : the mesh's UVs span UDIM tiles 1001, 1002; put <UDIM> in "
+        "the name (e.g. texture_<UDIM>.exr) for one file per tile");
+    EXPECT_FALSE(fs::exists(dir / "tetra.exr"));
+    r = texsyn(run + "-o 'tetra_<UDIM>.exr'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read("tetra_1001.exr").spec().get_int_attribute("synth:udim"), 1001);
+    EXPECT_EQ(read("tetra_1002.exr").spec().get_int_attribute("synth:udim"), 1002);
+}
+
+// The bake is what a recipe of choosy-surface gives: stock oiiotool opens it through the
+// plugin with the pixels of the tool's own run.
+TEST_F(SurfaceCli, RecipesOpenAsTheBake)
+{
+    fs::copy_file(mesh_path("torus_uv.obj"), dir / "torus_uv.obj");
+    CliRun r = texsyn("--seed 3 flowers.png --choosy-surface:mesh=torus_uv.obj:levels=3:bake=64x64 "
+                      "-d float -o torus.exr --recipe torus.texsyn");
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = shell("oiiotool torus.texsyn -d float -o again.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(pixel_hash(read("again.exr")), pixel_hash(read("torus.exr")));
+    // A mesh without UVs makes no image: refused when the recipe is opened.
+    r = shell("iinfo 'flowers.png.texsyn?method=choosy-surface&mesh=sphere.obj'");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("mesh=sphere.obj : has no UVs"), std::string::npos) << r.err;
+}
+
+// remesh=auto remeshes an uneven mesh (the cow) to its own face count and keeps an even
+// one (the sphere); remesh=0 keeps the cow, with a warning.
+TEST_F(SurfaceCli, UnevenMeshesAreRemeshedUnlessTold)
+{
+    fs::copy_file(mesh_path("cow.obj"), dir / "cow.obj");
+    CliRun r = texsyn("-v flowers.png --choosy-surface:mesh=cow.obj:levels=1 -o cow.ply");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("remesh=auto: the mesh's face areas differ 82x (99th over 1st "
+                         "percentile), so it was remeshed to about 5804 even faces first"),
+        std::string::npos)
+        << r.err;
+    r = texsyn("-v flowers.png --choosy-surface:mesh=cow.obj:levels=1:remesh=0 -o cow0.ply");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("5804 faces from 5804"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("WARNING: the mesh's face areas differ 82x"), std::string::npos) << r.err;
+    r = texsyn("-v flowers.png --choosy-surface:mesh=sphere.obj:levels=1 -o sphere.ply");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("1620 faces from 1620 (54 same-coloured adjacent base faces)\n"),
+        std::string::npos)
+        << r.err;
 }

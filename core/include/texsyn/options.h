@@ -110,8 +110,8 @@ using MemberAccess = std::function<V*(const void*)>;
 // once for every table.
 OptionField integer_field(
     std::string name, int lo, int hi, bool odd, std::string help, MemberAccess<int> member);
-OptionField optional_integer_field(
-    std::string name, int lo, int hi, std::string help, MemberAccess<std::optional<int>> member);
+OptionField optional_integer_field(std::string name, int lo, int hi, std::string help,
+    MemberAccess<std::optional<int>> member, std::string unset);
 OptionField real_field(
     std::string name, float lo, float hi, std::string help, MemberAccess<float> member);
 OptionField size_field(std::string name, int hi, std::string zero_means, std::string help,
@@ -149,11 +149,12 @@ public:
     {
         return add(detail::integer_field(name, lo, hi, true, help, access(m)));
     }
-    /// An optional int member in [lo, hi]; unset is written (and read) as "none".
-    OptionTable& optional_integer(
-        const char* name, std::optional<int> T::*m, int lo, int hi, const char* help)
+    /// An optional int member in [lo, hi]; unset is written (and read) as `unset` ("none",
+    /// or e.g. "auto" where the method then chooses).
+    OptionTable& optional_integer(const char* name, std::optional<int> T::*m, int lo, int hi,
+        const char* help, const char* unset = "none")
     {
-        return add(detail::optional_integer_field(name, lo, hi, help, access(m)));
+        return add(detail::optional_integer_field(name, lo, hi, help, access(m), unset));
     }
     /// A float member in [lo, hi].
     OptionTable& real(const char* name, float T::*m, float lo, float hi, const char* help)

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@
 
 namespace texsyn {
 
+/// remesh=auto remeshes a mesh whose face areas' 99th percentile exceeds its 1st by more
+/// than this (the classic cow: 82; CGAL's mushroom: 16; even meshes: below 3).
+constexpr double kUnevenFaceAreas = 8.0;
+
 /// The options of --choosy-surface: the mesh, how to prepare it, the bake, and choosy
 /// sampling's options (levels, iterations, penalty, search, dims, eps; not size or
 /// isotropic: a surface has no size, and no global orientation, so the sample is always
@@ -29,8 +34,10 @@ namespace texsyn {
 struct SurfaceOptions {
     ChoosyOptions options;
     std::string mesh; ///< the OBJ or PLY file to grow the texture on
-    /// Faces of the isotropic remesh before subdivision; 0 = the input mesh as it is.
-    int remesh = 0;
+    /// Faces of the isotropic remesh before subdivision; 0 = the input mesh as it is; unset
+    /// ("auto") = remesh to the input's face count if its faces are uneven
+    /// (kUnevenFaceAreas), else keep it.
+    std::optional<int> remesh;
     /// The UV bake's size (each UDIM tile), if the mesh has UVs; 0x0 = no bake.
     int bake_width = 1024;
     int bake_height = 1024;
@@ -50,8 +57,13 @@ struct SurfaceTexture {
     /// UDIM numbers (1001 + u tile + 10 v tile) and their bakes (float, scene-linear, the
     /// sample's channels), in UDIM order; empty without UVs or with bake=0x0.
     std::vector<std::pair<int, OIIO::ImageBuf>> bake;
+    double bake_coverage = 0.0;  ///< the share of the bake's texels inside the UV layout
     size_t base_faces = 0;       ///< faces of the mesh synthesis started from (after remesh)
     size_t colour_conflicts = 0; ///< §3.5: same-coloured adjacent base faces
+    /// The input mesh's face areas, 99th percentile over 1st: far above 1, faces stop
+    /// behaving like pixels (remesh evens them).
+    double area_spread = 1.0;
+    size_t remeshed_to = 0; ///< the remesh's target face count; 0 = not remeshed
 };
 
 /// Grows `sample` (scene-linear float; at least 2^levels pixels a side) on the mesh

@@ -345,24 +345,26 @@ OptionField integer_field(
     return f;
 }
 
-OptionField optional_integer_field(
-    std::string name, int lo, int hi, std::string help, MemberAccess<std::optional<int>> member)
+OptionField optional_integer_field(std::string name, int lo, int hi, std::string help,
+    MemberAccess<std::optional<int>> member, std::string unset)
 {
     OptionField f = described(
-        name, std::move(help), OptionType::Integer, range_text(lo, hi, true) + "|none", lo, hi);
-    f.none = "none";
+        name, std::move(help), OptionType::Integer, range_text(lo, hi, true) + "|" + unset, lo, hi);
+    f.none = unset;
     bind_member<std::optional<int>>(
         f, std::move(member),
-        [name](std::string_view v, std::optional<int>& out, std::string& error) {
+        [name, unset](std::string_view v, std::optional<int>& out, std::string& error) {
             int x = 0;
-            if (v == "none")
+            if (v == unset) {
+                out.reset();
                 return true;
+            }
             if (!parse_int32(v, x))
-                return reported(name, v, "not an integer (or none)", error);
+                return reported(name, v, "not an integer (or " + unset + ")", error);
             out = x;
             return true;
         },
-        [](const std::optional<int>& v) { return v ? std::to_string(*v) : std::string("none"); },
+        [unset](const std::optional<int>& v) { return v ? std::to_string(*v) : unset; },
         [name, lo, hi](const std::optional<int>& v, std::string_view shown, std::string& error) {
             return reported(name, shown, v ? integer_problem(*v, lo, hi, false) : "", error);
         });

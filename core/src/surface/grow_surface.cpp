@@ -3,10 +3,15 @@
 // the texture grown on its face pyramid, and the result baked into its UVs.
 #include <texsyn/surface.h>
 
+#include <algorithm>
+#include <cctype>
+#include <set>
+
 #include "face_stencil_pvt.h"
 #include "methods/method_helpers_pvt.h"
 #include "surface_mesh_pvt.h"
 #include "surface_synthesis_pvt.h"
+#include "uv_bake_pvt.h"
 
 namespace texsyn {
 
@@ -47,6 +52,23 @@ bool sample_fits_levels(int w, int h, int levels)
     return false;
 }
 
+// The 99th percentile of the faces' areas over the 1st (1 for an even mesh).
+double face_area_spread(const SurfaceMesh& mesh)
+{
+    std::vector<double> areas(mesh.faces.size());
+    for (size_t f = 0; f < areas.size(); ++f) {
+        const auto& c = mesh.faces[f];
+        const Imath::V3d a(mesh.vertices[c[0]]), b(mesh.vertices[c[1]]), d(mesh.vertices[c[2]]);
+        areas[f] = 0.5 * ((b - a) % (d - a)).length();
+    }
+    const size_t n = areas.size();
+    const size_t lo = n / 100, hi = std::min(n - 1, n * 99 / 100);
+    std::nth_element(areas.begin(), areas.begin() + long(lo), areas.end());
+    const double small = areas[lo];
+    std::nth_element(areas.begin(), areas.begin() + long(hi), areas.end());
+    return small > 0.0 ? areas[hi] / small : 0.0;
+}
+
 // The message of a mesh function without its leading "PATH: " (mesh= names the file).
 std::string mesh_error(const std::string& path, const std::string& message)
 {
@@ -82,7 +104,11 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
         error = mesh_error(options.mesh, why);
         return false;
     }
-    const size_t base_faces = options.remesh ? size_t(options.remesh) : mesh.faces.size();
+    const double spread = face_area_spread(mesh);
+    const size_t remesh_to = options.remesh ? size_t(*options.remesh)
+        : spread > kUnevenFaceAreas         ? mesh.faces.size()
+                                            : 0;
+    const size_t base_faces = remesh_to ? remesh_to : mesh.faces.size();
     const double finest = double(base_faces) * double(uint64_t(1) << (2 * (opt.levels - 1)));
     const std::string what = "levels=" + std::to_string(opt.levels) + " on "
         + std::to_string(base_faces) + " faces (" + std::to_string(uint64_t(finest))
@@ -95,12 +121,48 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     if (!check_memory(surface_memory_estimate(finest, in.width(), in.height(), in.nchannels(), opt),
             what, error))
         return false;
+    // The bake's size is checked before the synthesis: the UDIM tiles the UVs' bounding
+    // boxes touch (at least those the bake makes).
+    const bool bake = !mesh.uvs.empty() && options.bake_width && options.bake_height;
+    if (bake) {
+        const std::string size
+            = std::to_string(options.bake_width) + "x" + std::to_string(options.bake_height);
+        std::set<int> tiles;
+        for (const auto& corners : mesh.face_uvs) {
+            Imath::V2f lo = mesh.uvs[corners[0]], hi = lo;
+            for (uint32_t i : corners) {
+                lo.x = std::min(lo.x, mesh.uvs[i].x), lo.y = std::min(lo.y, mesh.uvs[i].y);
+                hi.x = std::max(hi.x, mesh.uvs[i].x), hi.y = std::max(hi.y, mesh.uvs[i].y);
+            }
+            if (!(lo.x >= 0.0f && hi.x <= 10.0f && lo.y >= 0.0f && hi.y <= 100.0f)) {
+                error = mesh_error(
+                    options.mesh, "has UVs outside u 0..10, v 0..100 (the UDIM tiles 1001..1999)");
+                return false;
+            }
+            for (int v = int(lo.y); v <= std::min(int(hi.y), 99); ++v)
+                for (int u = int(lo.x); u <= std::min(int(hi.x), 9); ++u)
+                    tiles.insert(1001 + u + 10 * v);
+        }
+        const double values = double(options.bake_width) * double(options.bake_height)
+            * double(in.nchannels()) * double(tiles.size());
+        if (values > double(detail::kMaxBakeValues)) {
+            error = option_error("bake", size,
+                "too large: " + std::to_string(tiles.size()) + " UDIM tiles of "
+                    + std::to_string(in.nchannels()) + " channels would hold over "
+                    + std::to_string(detail::kMaxBakeValues) + " values");
+            return false;
+        }
+        if (!check_memory(size_t(values * 4.0 * 1.5), "bake=" + size, error))
+            return false;
+    }
+
     SurfaceMesh remeshed;
-    if (options.remesh && !detail::remesh_isotropic(mesh, size_t(options.remesh), remeshed, why)) {
-        error = option_error("remesh", std::to_string(options.remesh), why);
+    if (remesh_to && !detail::remesh_isotropic(mesh, remesh_to, remeshed, why)) {
+        error = option_error(
+            "remesh", options.remesh ? std::to_string(*options.remesh) : "auto", why);
         return false;
     }
-    const SurfaceMesh& grown = options.remesh ? remeshed : mesh;
+    const SurfaceMesh& grown = remesh_to ? remeshed : mesh;
     detail::FaceLevel base;
     base.vertices = grown.vertices;
     base.faces = grown.faces;
@@ -110,6 +172,31 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
         return false;
 
     const detail::FaceLevel& level = synthesis.pyramid.levels.back();
+    if (bake) {
+        detail::UvBakeOptions settings;
+        settings.width = options.bake_width;
+        settings.height = options.bake_height;
+        settings.base_is_uv_mesh = remesh_to == 0;
+        settings.nthreads = opt.nthreads;
+        detail::UvBake baked;
+        if (!detail::bake_uv_texture(
+                mesh, synthesis.pyramid, synthesis.colours, settings, baked, why)) {
+            error = option_error("bake",
+                std::to_string(options.bake_width) + "x" + std::to_string(options.bake_height),
+                why);
+            return false;
+        }
+        for (detail::UvBakeTile& tile : baked.tiles) {
+            PlanarImage image;
+            image.channels = std::move(tile.channels);
+            image.channel_names = in.channel_names;
+            image.alpha_channel = in.alpha_channel;
+            OIIO::ImageBuf buf;
+            imagebuf_from_planes(image, buf, true);
+            out.bake.emplace_back(tile.udim, std::move(buf));
+        }
+        out.bake_coverage = baked.covered_fraction;
+    }
     out.vertices.resize(level.vertices.size());
     for (size_t v = 0; v < level.vertices.size(); ++v)
         out.vertices[v] = { level.vertices[v].x, level.vertices[v].y, level.vertices[v].z };
@@ -118,6 +205,8 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     out.colours = std::move(synthesis.colours);
     out.base_faces = synthesis.pyramid.levels.front().size();
     out.colour_conflicts = synthesis.pyramid.colour_conflicts;
+    out.area_spread = spread;
+    out.remeshed_to = remesh_to;
     return true;
 }
 

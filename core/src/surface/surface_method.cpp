@@ -4,6 +4,11 @@
 #include <texsyn/methods.h>
 #include <texsyn/surface.h>
 
+#include <cmath>
+#include <cstdio>
+
+#include <OpenImageIO/filesystem.h>
+
 #include "methods/method_helpers_pvt.h"
 #include "surface_mesh_pvt.h"
 
@@ -22,15 +27,30 @@ bool run_surface(const MethodOptions& options, const std::vector<MethodInput>& i
     for (auto& [udim, image] : texture->bake) {
         tag_synthesis(image.specmod(), "choosy-surface", settings.seed, options.format());
         image.specmod().attribute("synth:udim", udim);
+        image.specmod().attribute("synth:sample", OIIO::Filesystem::filename(inputs[0].name));
     }
     if (!texture->bake.empty())
         result.image = texture->bake.front().second;
     const size_t faces = texture->faces.size();
     result.notes = std::to_string(faces) + " faces from " + std::to_string(texture->base_faces)
-        + " (" + std::to_string(texture->colour_conflicts) + " same-coloured adjacent base faces)"
-        + (texture->bake.empty() ? std::string()
-                                 : ", baked into " + std::to_string(texture->bake.size())
-                    + " UDIM tile" + (texture->bake.size() == 1 ? "" : "s"));
+        + " (" + std::to_string(texture->colour_conflicts) + " same-coloured adjacent base faces)";
+    if (const size_t tiles = texture->bake.size())
+        result.notes += ", baked into " + std::to_string(tiles) + " UDIM tile"
+            + (tiles == 1 ? "" : "s") + " ("
+            + std::to_string(int(std::lround(texture->bake_coverage * 100.0)))
+            + "% of the texels inside the UV layout, the rest padded)";
+    // Uneven faces blur and slow the synthesis (the filters' sigma is the largest distance
+    // between adjacent faces): say how to even them.
+    char spread[32];
+    std::snprintf(spread, sizeof spread, "%.0f", texture->area_spread);
+    if (texture->remeshed_to && !opt.remesh)
+        result.notes += "; remesh=auto: the mesh's face areas differ " + std::string(spread)
+            + "x (99th over 1st percentile), so it was remeshed to about "
+            + std::to_string(texture->remeshed_to) + " even faces first (remesh=0 keeps it)";
+    else if (texture->area_spread > kUnevenFaceAreas && !texture->remeshed_to)
+        result.notes += "; WARNING: the mesh's face areas differ " + std::string(spread)
+            + "x, so its faces do not behave like pixels: remesh=N evens them "
+              "(docs/surfaces.md)";
     result.surface = std::move(texture);
     return true;
 }
@@ -79,10 +99,10 @@ const Method& surface_method()
             "is the subdivided mesh with a colour per face: -o NAME.ply writes it (float "
             "scene-linear colours and 8-bit sRGB for viewers); if the mesh has UVs, -o "
             "NAME.exr (or .png, .tif) writes its UV bake at bake=WxH, with NAME_<UDIM>.exr "
-            "when the UVs span several UDIM tiles. remesh=N first makes N near-equilateral "
-            "faces.",
+            "when the UVs span several UDIM tiles. A mesh of uneven faces is first remeshed to "
+            "as many even ones (remesh=auto); remesh=N makes N, remesh=0 keeps the mesh.",
             "texsyn data/samples/flowers.png --choosy-surface:mesh=data/meshes/"
-            "torus_uv.obj:levels=3 -o torus_flowers.ply",
+            "torus_uv.obj:levels=3:bake=256x256 -o torus_flowers.ply -o torus_flowers.png",
             "any texture, on a mesh instead of a plane" };
         row.layout = surface_layout;
         return row;

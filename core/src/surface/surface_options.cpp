@@ -35,9 +35,12 @@ const OptionTable<SurfaceOptions>& SurfaceOptions::table()
                 { "dims",
                     "kdtree: principal components kept of the 36-face neighbourhoods (36 x "
                     "channels or more = all: exact)" } });
-        t.integer("remesh", &O::remesh, 0, 50'000'000,
+        t.optional_integer("remesh", &O::remesh, 0, 50'000'000,
             "first remesh isotropically to about this many near-equilateral faces of equal "
-            "size, so that faces behave like pixels (0 = grow on the mesh as it is)");
+            "size, so that faces behave like pixels; 0 = grow on the mesh as it is; auto = "
+            "remesh to the mesh's own face count if its face areas differ more than 8x "
+            "(99th over 1st percentile)",
+            "auto");
         t.size("bake", &O::bake_width, &O::bake_height, 32768, "no bake",
             "if the mesh has UVs: the size WxH of its UV texture (each UDIM tile), written by "
             "an image -o");
@@ -52,9 +55,9 @@ bool SurfaceOptions::validate(std::string& error) const
         error = "mesh= : a mesh file is needed (OBJ or PLY)";
         return false;
     }
-    if (remesh > 0 && remesh < 8) {
-        error
-            = "remesh=" + std::to_string(remesh) + " : expected 0 (no remesh) or 8 and more faces";
+    if (remesh && *remesh > 0 && *remesh < 8) {
+        error = "remesh=" + std::to_string(*remesh)
+            + " : expected 0 (no remesh), 8 and more faces, or auto";
         return false;
     }
     return options.validate(error);
