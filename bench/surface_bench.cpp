@@ -2,10 +2,12 @@
 // Issue #17's workloads: whole runs of the registry row choosy-surface (mesh reading and
 // checks included, sample reading and PLY writing excluded), rust.png (RGB, as stored)
 // cropped to n x n, 2 threads, seed 0, default options (kd-trees, dims=20, eps=30, one
-// iteration per level, no remesh).
+// iteration per level, remesh=auto) unless named.
 //   S1 sphere.obj (1,620 faces), levels=4 (103,680 faces) from 96x96 (target: <= 10 s)
 //   S2 cow.obj (5,804 faces), levels=5 (1,485,824 faces) from 160x160 (target: <= 120 s,
-//      <= 4 GB)
+//      <= 4 GB); remesh=auto remeshes the cow (uneven faces) to 5,804 even ones
+//   S2_asis = S2 with remesh=0: the cow as given (slivers: sigma is 7.6x the mean
+//      distance between adjacent faces)
 //   M_<search>_L<levels>: scaling in the faces M (eq. 8), sphere.obj at levels 2..5
 //   N_<search>_N<n>: scaling in the sample N, sphere.obj at levels=2 (6,480 faces)
 // `peak_MB` is the process's peak resident memory so far: run one workload per process
@@ -33,6 +35,7 @@ struct Workload {
     int sample_size;
     ChoosySearch search;
     int repetitions;
+    bool remesh = true; ///< remesh=auto (the default); false: remesh=0
 };
 
 void run_workload(benchmark::State& state, const Workload& w)
@@ -43,6 +46,8 @@ void run_workload(benchmark::State& state, const Workload& w)
     opt.mesh = std::string(TEXSYN_MESH_DIR) + "/" + w.mesh;
     opt.options.levels = w.levels;
     opt.options.search = w.search;
+    if (!w.remesh)
+        opt.remesh = 0;
     const std::vector<MethodInput> inputs = { { &sample, nullptr, "rust.png" } };
     RunSettings settings;
     settings.nthreads = 2;
@@ -66,6 +71,7 @@ void register_workloads()
     static std::vector<Workload> workloads = {
         { "S1_sphere_L4_N96", "sphere.obj", 4, 96, S::KdTree, 3 },
         { "S2_cow_L5_N160", "cow.obj", 5, 160, S::KdTree, 1 },
+        { "S2_asis_cow_L5_N160", "cow.obj", 5, 160, S::KdTree, 1, false },
     };
     // Eq. 8 in M: the sphere at levels 2..5 (6,480 to 414,720 faces) from 128x128 with
     // kd-trees, and at levels 2..3 from 32x32 exhaustively.
