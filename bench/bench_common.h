@@ -1,11 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
-// What the benchmark programs share: peak memory for their `peak_MB` counters, and how
-// a workload is run.
+// What the benchmark programs share: peak memory for their `peak_MB` counters, bundled
+// samples, and how a workload is run.
 #pragma once
 
 #include <sys/resource.h>
 
+#include <stdexcept>
+#include <string>
+
+#include <OpenImageIO/imagebufalgo.h>
+
 #include <benchmark/benchmark.h>
+
+#include <texsyn/io.h>
 
 namespace texsyn::bench {
 
@@ -16,6 +23,17 @@ inline double peak_megabytes()
     rusage ru {};
     getrusage(RUSAGE_SELF, &ru);
     return double(ru.ru_maxrss) / 1024.0;
+}
+
+/// The top-left n x n (first three channels) of a bundled sample (data/samples/<name>),
+/// as stored; throws if it cannot be read.
+inline OIIO::ImageBuf sample_crop(const std::string& name, int n)
+{
+    OIIO::ImageBuf sample;
+    std::string error;
+    if (!texsyn::read_image(std::string(TEXSYN_SAMPLE_DIR) + "/" + name, sample, error))
+        throw std::runtime_error(error);
+    return OIIO::ImageBufAlgo::cut(sample, OIIO::ROI(0, n, 0, n, 0, 1, 0, 3));
 }
 
 /// A whole synthesis per iteration, wall time in ms, `repetitions` runs reported as

@@ -23,18 +23,9 @@
 using namespace texsyn;
 using texsyn::bench::configure_workload;
 using texsyn::bench::peak_megabytes;
+using texsyn::bench::sample_crop;
 
 namespace {
-
-// The top-left n x n of a bundled sample.
-OIIO::ImageBuf sample_crop(const std::string& name, int n)
-{
-    OIIO::ImageBuf sample;
-    std::string error;
-    if (!read_image(std::string(TEXSYN_SAMPLE_DIR) + "/" + name, sample, error))
-        throw std::runtime_error(error);
-    return OIIO::ImageBufAlgo::cut(sample, OIIO::ROI(0, n, 0, n, 0, 1, 0, 3));
-}
 
 struct Workload {
     std::string name;

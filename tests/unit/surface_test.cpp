@@ -3,6 +3,7 @@
 // face-domain filters, the 2-distant stencil, and Algorithm 1 on a flat grid and a sphere.
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include <OpenImageIO/Imath.h>
 
@@ -149,6 +150,51 @@ TEST(FaceFilter, ConstantsStayConstant)
         p.levels[1], p.levels[2], constant_values(p.levels[2].size(), 0.3f), kernel, 2);
     for (float v : down[0])
         EXPECT_NEAR(v, 0.3f, 1e-5f);
+}
+
+// Eq. 3-4 the slow way: Ω(i) flooded with a std::set, then the weighted mean over it.
+TEST(FaceFilter, MatchesTheWeightedMeanOverAFloodedNeighbourhood)
+{
+    FacePyramid p = build_face_pyramid(icosphere(1), 3, EdgePoints::Butterfly);
+    const FaceLevel& level = p.levels[2];
+    const FaceKernel kernel { 2.0 * level.max_adjacent_distance, 1.3 };
+    FaceValues values(2, std::vector<float>(level.size()));
+    for (size_t f = 0; f < level.size(); ++f) {
+        values[0][f] = float(std::sin(0.37 * double(f)));
+        values[1][f] = float(f % 7);
+    }
+    for (const std::vector<uint8_t>* only :
+        { (const std::vector<uint8_t>*)nullptr, &level.colour }) {
+        const FaceValues fast = filter_faces(level, values, kernel, only, 2);
+        for (uint32_t i = 0; i < level.size(); ++i) {
+            std::set<uint32_t> omega { i };
+            std::vector<uint32_t> todo { i };
+            while (!todo.empty()) {
+                const uint32_t j = todo.back();
+                todo.pop_back();
+                if (double((level.centroid[j] - level.centroid[i]).length()) * kernel.scale
+                    > 3.0 * kernel.sigma)
+                    continue;
+                for (uint32_t g : level.across[j])
+                    if (g != kNoFace && omega.insert(g).second)
+                        todo.push_back(g);
+            }
+            double weights = 0.0, sum[2] = { 0.0, 0.0 };
+            for (uint32_t j : omega) {
+                const double r = double((level.centroid[j] - level.centroid[i]).length())
+                    * kernel.scale / kernel.sigma;
+                if (r > 3.0 || (only && !(*only)[j]))
+                    continue;
+                const double w = std::exp(-0.5 * r * r) * double(level.area[j]);
+                weights += w;
+                for (int c = 0; c < 2; ++c)
+                    sum[c] += w * double(values[size_t(c)][j]);
+            }
+            // Double sums in another order: equal to float rounding.
+            for (int c = 0; c < 2; ++c)
+                EXPECT_NEAR(fast[size_t(c)][i], sum[c] / weights, 1e-5) << i << " " << c;
+        }
+    }
 }
 
 TEST(FaceStencil, RegularGridFillsEverySlotAtItsPlace)

@@ -3,6 +3,7 @@
 // centre child, upsampling to the white children, and reduce and project (eq. 5–6).
 #include "face_filter_pvt.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <OpenImageIO/parallel.h>
@@ -11,51 +12,17 @@ namespace texsyn::detail {
 
 namespace {
 
-// A set of face indices for one face's neighbourhood: open addressing, cleared per use.
-class FaceSet {
-public:
-    void clear()
-    {
-        m_used.clear();
-        if (m_slots.empty())
-            m_slots.assign(1024, kNoFace);
-    }
-    // Inserts f; false if it was already there.
-    bool insert(uint32_t f)
-    {
-        if (2 * (m_used.size() + 1) > m_slots.size())
-            grow();
-        size_t i = hash(f);
-        while (m_slots[i] != kNoFace) {
-            if (m_slots[i] == f)
-                return false;
-            i = (i + 1) & (m_slots.size() - 1);
-        }
-        m_slots[i] = f;
-        m_used.push_back(i);
-        return true;
-    }
-    void reset()
-    {
-        for (size_t i : m_used)
-            m_slots[i] = kNoFace;
-        m_used.clear();
-    }
+// Tasks per convolution: few, because each task marks the faces it reaches in an array as
+// long as the level (a hash set per face's neighbourhood cost 1.6x the time on the cow).
+constexpr int64_t kFilterChunks = 16;
 
-private:
-    size_t hash(uint32_t f) const { return (size_t(f) * 0x9E3779B1u) & (m_slots.size() - 1); }
-    void grow()
-    {
-        std::vector<uint32_t> faces;
-        for (size_t i : m_used)
-            faces.push_back(m_slots[i]);
-        m_slots.assign(m_slots.size() * 2, kNoFace);
-        m_used.clear();
-        for (uint32_t f : faces)
-            insert(f);
-    }
-    std::vector<uint32_t> m_slots;
-    std::vector<size_t> m_used;
+// What the traversal reads of a face, in one place (one cache line for two faces instead of
+// five arrays): its centroid, area and neighbours, and whether it takes part (eq. 6's Γ).
+struct FaceSite {
+    Imath::V3f centroid;
+    float area;
+    std::array<uint32_t, 3> across;
+    uint32_t counts;
 };
 
 } // namespace
@@ -65,38 +32,49 @@ FaceValues filter_faces(const FaceLevel& level, const FaceValues& values, const 
 {
     const size_t nc = values.size(), nf = level.size();
     FaceValues out(nc, std::vector<float>(nf, 0.0f));
+    std::vector<FaceSite> sites(nf);
+    std::vector<float> interleaved(nf * nc);
+    for (size_t f = 0; f < nf; ++f) {
+        sites[f]
+            = { level.centroid[f], level.area[f], level.across[f], uint32_t(!only || (*only)[f]) };
+        for (size_t c = 0; c < nc; ++c)
+            interleaved[f * nc + c] = values[c][f];
+    }
     const double reach = 3.0 * kernel.sigma;
+    const int64_t chunk = std::max<int64_t>(1, (int64_t(nf) + kFilterChunks - 1) / kFilterChunks);
     OIIO::parallel_for_chunked(
-        0, int64_t(nf), 0,
+        0, int64_t(nf), chunk,
         [&](int64_t begin, int64_t end) {
-            FaceSet seen;
-            seen.clear();
-            std::vector<uint32_t> frontier;
+            // seen[j] == i: face j was reached in the traversal from face i.
+            std::vector<uint32_t> seen(nf, kNoFace), frontier;
             std::vector<double> sum(nc);
             for (int64_t i = begin; i < end; ++i) {
-                const Imath::V3f& ci = level.centroid[size_t(i)];
+                const Imath::V3f ci = sites[size_t(i)].centroid;
                 std::fill(sum.begin(), sum.end(), 0.0);
                 double weights = 0.0;
-                seen.reset();
                 frontier.assign(1, uint32_t(i));
-                seen.insert(uint32_t(i));
+                seen[size_t(i)] = uint32_t(i);
                 // Ω(i): i and the faces reached through edges while within 3 sigma.
                 while (!frontier.empty()) {
                     const uint32_t j = frontier.back();
                     frontier.pop_back();
-                    const double d = double((level.centroid[j] - ci).length()) * kernel.scale;
+                    const FaceSite& s = sites[j];
+                    const double d = double((s.centroid - ci).length()) * kernel.scale;
                     if (d > reach)
                         continue;
-                    if (!only || (*only)[j]) {
+                    if (s.counts) {
                         const double r = d / kernel.sigma;
-                        const double w = std::exp(-0.5 * r * r) * double(level.area[j]);
+                        const double w = std::exp(-0.5 * r * r) * double(s.area);
                         weights += w;
+                        const float* v = interleaved.data() + size_t(j) * nc;
                         for (size_t c = 0; c < nc; ++c)
-                            sum[c] += w * double(values[c][j]);
+                            sum[c] += w * double(v[c]);
                     }
-                    for (uint32_t g : level.across[j])
-                        if (g != kNoFace && seen.insert(g))
+                    for (uint32_t g : s.across)
+                        if (g != kNoFace && seen[g] != uint32_t(i)) {
+                            seen[g] = uint32_t(i);
                             frontier.push_back(g);
+                        }
                 }
                 for (size_t c = 0; c < nc; ++c)
                     out[c][size_t(i)] = weights > 0.0 ? float(sum[c] / weights) : 0.0f;

@@ -95,6 +95,47 @@ StencilShape make_shape()
     return shape;
 }
 
+// A face of the two rings further than this (in edge lengths) from every slot stays out.
+constexpr float kReach = 0.3f;
+
+// The slots that may be within kReach of a point, by square cells of the plane around the
+// stencil: a face is placed only in a slot within kReach, so only those are compared.
+class SlotCells {
+public:
+    explicit SlotCells(const StencilShape& shape)
+    {
+        for (int cy = 0; cy < kCells; ++cy)
+            for (int cx = 0; cx < kCells; ++cx) {
+                const float x0 = -kExtent + float(cx) * kCell, y0 = -kExtent + float(cy) * kCell;
+                auto& cell = m_slots[size_t(cy * kCells + cx)];
+                for (int s = 0; s < kStencilSlots; ++s) {
+                    const Imath::V2f& q = shape.position[size_t(s)];
+                    // Distance from the slot to the cell, with a margin for rounding.
+                    const float dx = std::max({ x0 - q.x, q.x - (x0 + kCell), 0.0f });
+                    const float dy = std::max({ y0 - q.y, q.y - (y0 + kCell), 0.0f });
+                    if (dx * dx + dy * dy < (kReach + 0.01f) * (kReach + 0.01f))
+                        cell.push_back(uint8_t(s));
+                }
+            }
+    }
+    // The candidate slots of `p`, in increasing order (none outside the cells).
+    const std::vector<uint8_t>& at(const Imath::V2f& p) const
+    {
+        static const std::vector<uint8_t> none;
+        const float fx = (p.x + kExtent) / kCell, fy = (p.y + kExtent) / kCell;
+        if (!(fx >= 0.0f && fy >= 0.0f && fx < float(kCells) && fy < float(kCells)))
+            return none;
+        return m_slots[size_t(int(fy) * kCells + int(fx))];
+    }
+
+private:
+    // Every slot is within 2.2 edge lengths of the centre, so cells over +-2.5 hold every
+    // point within kReach of one.
+    static constexpr float kExtent = 2.5f, kCell = 0.25f;
+    static constexpr int kCells = 20;
+    std::array<std::vector<uint8_t>, size_t(kCells* kCells)> m_slots;
+};
+
 } // namespace
 
 const StencilShape& stencil_shape()
@@ -111,9 +152,9 @@ bool complete(const std::array<uint32_t, kStencilSlots>& slots)
 std::vector<std::array<uint32_t, kStencilSlots>> face_stencils(const FaceLevel& level, int nthreads)
 {
     const StencilShape& shape = stencil_shape();
+    static const SlotCells cells(shape);
     std::vector<std::array<uint32_t, kStencilSlots>> out(level.size());
-    // A face of the two rings further than this (in edge lengths) from every slot stays out.
-    constexpr float kReach2 = 0.3f * 0.3f;
+    constexpr float kReach2 = kReach * kReach;
     // Few chunks: each holds a mark per face of the level.
     const int64_t chunk = std::max<int64_t>(1, int64_t(level.size()) / 8);
     OIIO::parallel_for_chunked(
@@ -155,16 +196,17 @@ std::vector<std::array<uint32_t, kStencilSlots>> face_stencils(const FaceLevel& 
                         continue;
                     const Imath::V3f d = level.centroid[g] - level.centroid[f];
                     const Imath::V2f p(d.dot(x) / unit, d.dot(y) / unit);
+                    // The nearest slot, if it is within kReach (the first of equals).
                     int nearest = -1;
                     float nearest2 = 0.0f;
-                    for (int s = 0; s < kStencilSlots; ++s) {
-                        const float d2 = (shape.position[size_t(s)] - p).length2();
+                    for (uint8_t s : cells.at(p)) {
+                        const float d2 = (shape.position[s] - p).length2();
                         if (nearest < 0 || d2 < nearest2) {
                             nearest = s;
                             nearest2 = d2;
                         }
                     }
-                    if (nearest2 < best[size_t(nearest)]) {
+                    if (nearest >= 0 && nearest2 < best[size_t(nearest)]) {
                         best[size_t(nearest)] = nearest2;
                         out[f][size_t(nearest)] = g;
                     }
