@@ -72,7 +72,7 @@ struct SurfaceTexture {
     size_t base_faces = 0;       ///< faces of the mesh synthesis started from (after remesh)
     size_t colour_conflicts = 0; ///< §3.5: same-coloured adjacent base faces
     FaceShapes input_shapes;     ///< the input mesh's faces
-    size_t remeshed_to = 0;      ///< the remesh's target face count; 0 = not remeshed
+    size_t remeshed_to = 0;      ///< the remesh's face count; 0 = not remeshed
 };
 
 /// Grows `sample` (scene-linear float; at least 2^levels pixels a side) on the mesh

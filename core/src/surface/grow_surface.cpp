@@ -124,7 +124,9 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     const size_t remesh_to = options.remesh                     ? size_t(*options.remesh)
         : shapes.even() || mesh.faces.size() < kAutoRemeshFaces ? 0
                                                                 : mesh.faces.size();
-    const size_t base_faces = remesh_to ? remesh_to : mesh.faces.size();
+    // remesh=auto may try up to 20% more faces (below).
+    const size_t base_faces
+        = remesh_to ? (options.remesh ? remesh_to : remesh_to * 6 / 5) : mesh.faces.size();
     const double finest = double(base_faces) * double(uint64_t(1) << (2 * (opt.levels - 1)));
     const std::string what = "levels=" + std::to_string(opt.levels) + " on "
         + std::to_string(base_faces) + " faces (" + std::to_string(uint64_t(finest))
@@ -172,11 +174,19 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
             return false;
     }
 
+    // A regular grid of right triangles with edges near the target length is a fixed point
+    // of the remesher (every valence is already 6): remesh=auto then asks for 10% and 20%
+    // more faces, which makes it move.
     SurfaceMesh remeshed;
-    if (remesh_to && !detail::remesh_isotropic(mesh, remesh_to, remeshed, why)) {
-        error = option_error(
-            "remesh", options.remesh ? std::to_string(*options.remesh) : "auto", why);
-        return false;
+    for (int attempt = 0; remesh_to && attempt < (options.remesh ? 1 : 3); ++attempt) {
+        if (!detail::remesh_isotropic(
+                mesh, remesh_to + remesh_to * size_t(attempt) / 10, remeshed, why)) {
+            error = option_error(
+                "remesh", options.remesh ? std::to_string(*options.remesh) : "auto", why);
+            return false;
+        }
+        if (face_shapes(remeshed).even())
+            break;
     }
     const SurfaceMesh& grown = remesh_to ? remeshed : mesh;
     detail::FaceLevel base;
@@ -222,7 +232,7 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     out.base_faces = synthesis.pyramid.levels.front().size();
     out.colour_conflicts = synthesis.pyramid.colour_conflicts;
     out.input_shapes = shapes;
-    out.remeshed_to = remesh_to;
+    out.remeshed_to = remesh_to ? remeshed.faces.size() : 0;
     return true;
 }
 

@@ -48,8 +48,8 @@ bool run_surface(const MethodOptions& options, const std::vector<MethodInput>& i
         "angles %.0f degrees apart at the median)",
         shapes.area_spread, shapes.angle_spread);
     if (texture->remeshed_to && !opt.remesh)
-        result.notes += "; remesh=auto: " + std::string(uneven) + ", so it was remeshed to about "
-            + std::to_string(texture->remeshed_to) + " even faces first (remesh=0 keeps it)";
+        result.notes += "; remesh=auto: " + std::string(uneven) + ", so it was first remeshed to "
+            + std::to_string(texture->remeshed_to) + " even faces (remesh=0 keeps it)";
     else if (!shapes.even() && !texture->remeshed_to)
         result.notes += "; WARNING: " + std::string(uneven)
             + ", so they do not behave like pixels: remesh=N evens them (docs/surfaces.md)";
