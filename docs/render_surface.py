@@ -214,8 +214,9 @@ def write_scene(path, vertices, faces, colours, args):
         if args.unlit:
             w("#declare F = finish { ambient 1 diffuse 0 specular 0 }\n")
         else:
+            # No jitter in the area light: the same scene renders to the same pixels.
             w(f"light_source {{ {pov_vec(key)} rgb 0.85\n"
-              f"  area_light {pov_vec(ax)}, {pov_vec(ay)}, 4, 4 adaptive 1 jitter circular orient }}\n")
+              f"  area_light {pov_vec(ax)}, {pov_vec(ay)}, 4, 4 adaptive 1 circular orient }}\n")
             w(f"light_source {{ {pov_vec(fill)} rgb 0.30 shadowless }}\n")
             w("#declare F = finish { ambient 0.15 diffuse 1.0 specular 0 }\n")
         w(f"mesh2 {{\n vertex_vectors {{ {len(vertices)},\n")
