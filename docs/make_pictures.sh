@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Regenerates the pictures in docs/images with the tool itself.
-# usage: docs/make_pictures.sh BUILD/oiiotool-ext/texsyn
+# usage: docs/make_pictures.sh BUILD/oiiotool-ext/texsyn [surfaces]
+# (with `surfaces`, only docs/surfaces.md's pictures; they need povray: apt-get install -y povray)
 set -euo pipefail
 texsyn=$(realpath "$1")
 cd "$(dirname "$0")"
@@ -36,6 +37,57 @@ patch_pictures() {
   oiiotool "$out/pp_e.png" -o "$out/which_no_sample.png"
   rm -f "$out"/pp_*
 }
+# docs/surfaces.md: --choosy-surface (seed 1) written as .ply and rendered with POV-Ray by
+# render_surface.py at 480x360, each beside its sample (shown 2x, nearest, on the renders'
+# grey) or beside the render it is compared with.
+surface_pictures() {
+  command -v povray >/dev/null || { echo "make_pictures.sh: needs povray (apt-get install -y povray)" >&2; exit 1; }
+  local meshes=../data/meshes tmp
+  tmp=$(mktemp -d)
+  grow() { # SAMPLE MESH OPTIONS NAME [render_surface.py options...]
+    local t0=$SECONDS
+    "$texsyn" --seed 1 "$samples/$1.png" --choosy-surface:mesh="$meshes/$2.obj$3" -o "$tmp/$4.ply"
+    echo "$4: texsyn $((SECONDS - t0)) s"
+    python3 render_surface.py "$tmp/$4.ply" "$tmp/$4.png" --size 480x360 "${@:5}"
+  }
+  beside() { # SAMPLE RENDER OUT: the sample at 2x on a 480x360 grey cell, then the render
+    oiiotool "$samples/$1.png" --resize:filter=box 256x256 \
+        --pattern constant:color=0.93,0.93,0.93 480x360 3 --paste +112+52 "$tmp/$2.png" \
+        --mosaic:pad=4 2x1 -d uint8 -o "$out/$3.png"
+  }
+  grow flowers sphere ":levels=4" sphere_flowers --view 1,0.6,1.6
+  beside flowers sphere_flowers surface_sphere_flowers
+  grow stucco_yellow cow ":levels=4:remesh=6000" cow_stucco --view 0.6,0.35,1
+  beside stucco_yellow cow_stucco surface_cow_stucco
+  grow pebbles cow ":levels=4:remesh=6000" cow_pebbles --view 0.6,0.35,1
+  beside pebbles cow_pebbles surface_cow_pebbles
+  grow pebbles cow ":levels=4" cow_pebbles_raw --view 0.6,0.35,1
+  oiiotool "$tmp/cow_pebbles_raw.png" "$tmp/cow_pebbles.png" --mosaic:pad=4 2x1 -d uint8 \
+      -o "$out/surface_cow_remesh.png"
+  grow leaves_autumn mushroom ":levels=4" mushroom_leaves --view 1,0.7,0.5 --up 0,0,1
+  beside leaves_autumn mushroom_leaves surface_mushroom_leaves
+  grow marble_pink knot ":levels=4" knot_marble --view 0.3,0.4,1
+  beside marble_pink knot_marble surface_knot_marble
+  # The flat grid seen from above (--unlit: the face colours themselves; 256 pixels across
+  # its 256x256 squares at levels=3), as it is and remeshed, beside --choosy at 256x256 with
+  # isotropic=1 (the image counterpart of the six rotations); the middle 192x192 of each.
+  # remesh=9000 (9,848 faces), not 8192: at 8192 every grid edge already lies in the
+  # remesher's length band and the grid comes back unchanged.
+  grow pebbles plane_grid ":levels=3" plane_pebbles --size 272x272 --view 0,0,1 --fov 8 --unlit
+  grow pebbles plane_grid ":levels=3:remesh=9000" plane_remesh --size 272x272 --view 0,0,1 \
+      --fov 8 --unlit
+  "$texsyn" --seed 1 "$samples/pebbles.png" --choosy:size=256x256:levels=3:isotropic=1 \
+      -o "$tmp/choosy.png"
+  oiiotool "$tmp/plane_pebbles.png" --cut 192x192+40+40 "$tmp/plane_remesh.png" --cut 192x192+40+40 \
+      "$tmp/choosy.png" --cut 192x192+32+32 --mosaic:pad=4 3x1 -d uint8 \
+      -o "$out/surface_plane_choosy.png"
+  rm -rf "$tmp"
+}
+if [ "${2:-}" = surfaces ]; then
+  surface_pictures
+  ls -la "$out"/surface_*
+  exit 0
+fi
 oiiotool "$samples/rust.png" -o "$out/rust_sample.png"
 "$texsyn" --seed 1 "$samples/rust.png" --pyramid:size=512x512 -o "$out/rust_512.png"
 "$texsyn" --seed 1 "$samples/marble_pink.png" --pyramid:size=256x256 -o "$out/marble_steerable.png"
@@ -168,4 +220,5 @@ oiiotool "${presets[@]}" --mosaic:pad=4 3x2 -o "$out/cascade_presets.png"
 rm -f "$out"/cc_*
 rm -f "$out/stucco_tile.png" "$out/rust.tsa"
 patch_pictures
+surface_pictures
 ls -la "$out"
