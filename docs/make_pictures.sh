@@ -61,7 +61,7 @@ surface_pictures() {
   beside stucco_yellow cow_stucco surface_cow_stucco
   grow pebbles cow ":levels=4:remesh=6000" cow_pebbles --view 0.6,0.35,1
   beside pebbles cow_pebbles surface_cow_pebbles
-  grow pebbles cow ":levels=4" cow_pebbles_raw --view 0.6,0.35,1
+  grow pebbles cow ":levels=4:remesh=0" cow_pebbles_raw --view 0.6,0.35,1
   oiiotool "$tmp/cow_pebbles_raw.png" "$tmp/cow_pebbles.png" --mosaic:pad=4 2x1 -d uint8 \
       -o "$out/surface_cow_remesh.png"
   grow leaves_autumn mushroom ":levels=4" mushroom_leaves --view 1,0.7,0.5 --up 0,0,1
@@ -71,11 +71,9 @@ surface_pictures() {
   # The flat grid seen from above (--unlit: the face colours themselves; 256 pixels across
   # its 256x256 squares at levels=3), as it is and remeshed, beside --choosy at 256x256 with
   # isotropic=1 (the image counterpart of the six rotations); the middle 192x192 of each.
-  # remesh=9000 (9,848 faces), not 8192: at 8192 every grid edge already lies in the
-  # remesher's length band and the grid comes back unchanged.
-  grow pebbles plane_grid ":levels=3" plane_pebbles --size 272x272 --view 0,0,1 --fov 8 --unlit
-  grow pebbles plane_grid ":levels=3:remesh=9000" plane_remesh --size 272x272 --view 0,0,1 \
+  grow pebbles plane_grid ":levels=3:remesh=0" plane_pebbles --size 272x272 --view 0,0,1 \
       --fov 8 --unlit
+  grow pebbles plane_grid ":levels=3" plane_remesh --size 272x272 --view 0,0,1 --fov 8 --unlit
   "$texsyn" --seed 1 "$samples/pebbles.png" --choosy:size=256x256:levels=3:isotropic=1 \
       -o "$tmp/choosy.png"
   oiiotool "$tmp/plane_pebbles.png" --cut 192x192+40+40 "$tmp/plane_remesh.png" --cut 192x192+40+40 \
