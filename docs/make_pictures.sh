@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Regenerates the pictures in docs/images with the tool itself.
-# usage: docs/make_pictures.sh BUILD/oiiotool-ext/texsyn [surfaces]
-# (with `surfaces`, only docs/surfaces.md's pictures; they need povray: apt-get install -y povray)
+# usage: docs/make_pictures.sh BUILD/oiiotool-ext/texsyn [surfaces|fill]
+# (with `surfaces`, only docs/surfaces.md's pictures; they need povray: apt-get install -y povray;
+# with `fill`, only docs/fill.md's)
 set -euo pipefail
 texsyn=$(realpath "$1")
 cd "$(dirname "$0")"
@@ -81,6 +82,36 @@ surface_pictures() {
       -o "$out/surface_plane_choosy.png"
   rm -rf "$tmp"
 }
+# docs/fill.md: a hole cut into a bundled sample (black), filled by OIIO's push-pull (the
+# baseline) and by --fill (seed 1), each a 256x256 crop shown 2x; the masks are blobs made
+# with oiiotool (boxes, blurred, thresholded).
+fill_pictures() {
+  local tmp
+  tmp=$(mktemp -d)
+  blob() { # SIZE BOX1 BOX2 OUT
+    oiiotool --create "$1" 1 --box:color=1:fill=1 "$2" --box:color=1:fill=1 "$3" --blur 25x25 \
+        --subc 0.5 --mulc 1000 --clamp:min=0:max=1 -d uint8 -o "$4"
+  }
+  one() { # SAMPLE MASK NAME
+    "$texsyn" --seed 1 "$samples/$1.png" --fill:mask="$2" -o "$tmp/filled.png"
+    oiiotool "$2" --mulc -1 --addc 1 --ch 0,0,0 "$samples/$1.png" --mul -o "$tmp/holed.png"
+    oiiotool "$samples/$1.png" --ch R,G,B,A=1 "$2" --mulc -1 --addc 1 --ch 0,0,0,0 --mul \
+        --fillholes --ch R,G,B -o "$tmp/pushpull.png"
+    oiiotool "$tmp/holed.png" "$tmp/pushpull.png" "$tmp/filled.png" --mosaic:pad=4 3x1 \
+        --resize:filter=box 200% -d uint8 -o "$out/fill_$3.png"
+  }
+  one bricks ../data/masks/bricks_hole.png bricks
+  blob 256x256 60,80,140,150 90,60,120,180 "$tmp/tiles_hole.png"
+  one tiles_green "$tmp/tiles_hole.png" tiles
+  blob 128x128 50,15,75,100 40,45,90,65 "$tmp/wood_hole.png"
+  one wood_grain "$tmp/wood_hole.png" wood
+  rm -rf "$tmp"
+}
+if [ "${2:-}" = fill ]; then
+  fill_pictures
+  ls -la "$out"/fill_*
+  exit 0
+fi
 if [ "${2:-}" = surfaces ]; then
   surface_pictures
   ls -la "$out"/surface_*

@@ -62,6 +62,8 @@ TEST_F(Cli, MethodHelpExamplesRun)
     fs::create_directory_symlink(TEXSYN_TEST_DATA, dir / "data/samples");
     fs::create_directory_symlink(
         fs::path(TEXSYN_TEST_DATA).parent_path() / "meshes", dir / "data/meshes");
+    fs::create_directory_symlink(
+        fs::path(TEXSYN_TEST_DATA).parent_path() / "masks", dir / "data/masks");
     for (const Method* m : methods()) {
         SCOPED_TRACE(m->name);
         ASSERT_EQ(m->example.find("texsyn "), 0u) << m->example;

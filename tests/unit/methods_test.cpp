@@ -59,9 +59,10 @@ TEST(Methods, EveryRowIsComplete)
         ASSERT_TRUE(m->run);
         const MethodOptions defaults = m->defaults();
         std::string error;
-        // The defaults are a working synthesis; a mix's mode must be chosen, and the mesh
-        // a texture grows on.
-        EXPECT_EQ(defaults.validate(error), m->name != "mix" && m->name != "choosy-surface")
+        // The defaults are a working synthesis; a mix's mode must be chosen, the mesh a
+        // texture grows on, and the mask of a fill.
+        EXPECT_EQ(defaults.validate(error),
+            m->name != "mix" && m->name != "choosy-surface" && m->name != "fill")
             << error;
         EXPECT_EQ(m->inputs == MethodInputs::Samples, bool(m->count));
         if (m->count) {

@@ -20,6 +20,7 @@ const Method& neighborhood_method();
 const Method& choosy_method();
 const Method& surface_method();
 const Method& patch_method();
+const Method& fill_method();
 const Method& cascade_method();
 const Method& analyze_method();
 const Method& check_method();
@@ -36,6 +37,7 @@ const std::vector<const Method*>& methods()
         &detail::choosy_method(),
         &detail::surface_method(),
         &detail::patch_method(),
+        &detail::fill_method(),
         &detail::cascade_method(),
         &detail::analyze_method(),
         &detail::check_method(),

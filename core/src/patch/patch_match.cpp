@@ -52,6 +52,7 @@ struct Pass {
     const std::vector<uint32_t>* uses;
     float unit, free_uses;
     uint64_t seed, stream;
+    const std::vector<uint8_t>* active; // null = every pixel
 };
 
 // One row of a pass: each pixel's best of its current source, its neighbours' (at the
@@ -67,13 +68,16 @@ void search_row(const Pass& pass, int y)
             ? 0.0f
             : pass.unit * std::max(0.0f, float((*pass.uses)[s]) - pass.free_uses);
     };
+    const SampleLevel& sample = *pass.sample;
     for (int x = 0; x < w; ++x) {
         const size_t q = size_t(y) * size_t(w) + size_t(x);
+        if (pass.active && !(*pass.active)[q])
+            continue;
         uint32_t best = field.source[q];
         float best_distance = field.distance[q];
         float best_cost = best_distance + penalty(best);
         auto consider = [&](uint32_t s) {
-            if (s == best)
+            if (s == best || !sample.allows(s))
                 return;
             const float p = penalty(s);
             if (p >= best_cost)
@@ -134,6 +138,8 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
             for (int y = int(b) * kRowBlock; y < std::min(h, int(b + 1) * kRowBlock); ++y)
                 for (int x = 0; x < w; ++x) {
                     const size_t q = size_t(y) * size_t(w) + size_t(x);
+                    if (settings.active && !(*settings.active)[q])
+                        continue;
                     field.distance[q] = distance_at(
                         padded, pad, x, y, sample.pixels, field.source[q], settings.patch, inf);
                 }
@@ -143,11 +149,19 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
     // The penalty of a source used `count` times: repetition x the field's mean distance
     // for each use beyond the count an even use of the sample gives each centre, so that
     // over-used sources give way and the rest are free (no churn among them).
-    const double ideal = double(n) / double(std::max<size_t>(range.count(), 1));
+    auto searched = [&](size_t q) { return !settings.active || (*settings.active)[q] != 0; };
+    size_t nsearched = 0;
     double mean = 0.0; // summed in row order: the same whatever the thread count
-    for (float d : field.distance)
-        mean += double(d);
-    mean /= double(n);
+    for (size_t q = 0; q < n; ++q)
+        if (searched(q)) {
+            ++nsearched;
+            mean += double(field.distance[q]);
+        }
+    const size_t sources = sample.valid.empty()
+        ? range.count()
+        : size_t(std::count(sample.valid.begin(), sample.valid.end(), uint8_t(1)));
+    const double ideal = double(nsearched) / double(std::max<size_t>(sources, 1));
+    mean /= double(std::max<size_t>(nsearched, 1));
     const float unit = float(double(settings.repetition) * mean / ideal);
     const float free_uses = float(ideal);
     std::vector<uint32_t> uses(
@@ -161,12 +175,13 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
         const int step = settings.steps[pass];
         if (!uses.empty()) {
             std::fill(uses.begin(), uses.end(), 0u);
-            for (uint32_t s : field.source)
-                ++uses[s];
+            for (size_t q = 0; q < n; ++q)
+                if (searched(q))
+                    ++uses[field.source[q]];
         }
         const Pass context { &sample, &padded, pad, settings.patch, step, radius0, range, &field,
-            &next, &similar, k, &uses, unit, free_uses, settings.seed,
-            settings.stream * 16 + pass };
+            &next, &similar, k, &uses, unit, free_uses, settings.seed, settings.stream * 16 + pass,
+            settings.active };
         OIIO::parallel_for(
             0, nblocks,
             [&](int64_t b) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "methods/common_options_pvt.h"
+#include "patch_options_pvt.h"
 
 namespace texsyn {
 
@@ -23,12 +24,7 @@ const OptionTable<PatchOptions>& PatchOptions::table()
              "Gaussian pyramid levels, synthesized coarse to fine; 0 = from the sample's "
              "feature size (its features about one patch wide at the coarsest level)")
             .shared();
-        t.odd_integers("patch", &O::patch, 3, 33, 4,
-            "patch sizes (odd), largest first: each level optimizes with each in turn, the "
-            "finest with the last only");
-        t.integers("iterations", &O::iterations, 1, 50, kMaxLevels,
-            "EM iterations (search, then vote) per patch size, per level, finest first (one "
-            "value = every level; coarser levels missing from the list repeat the last)");
+        detail::add_patch_schedule(t, kMaxLevels);
         t.real("repetition", &O::repetition, 0.0f, 10.0f,
             "spatial-uniformity penalty: a source patch used more than an even use of the "
             "sample would use it costs more (spreads the result over the whole sample); 0 = "
@@ -36,12 +32,7 @@ const OptionTable<PatchOptions>& PatchOptions::table()
         t.real("guidance", &O::guidance, 0.0f, 10.0f,
             "weight of the automatic guidance channel (distance to the sample's edges), "
             "which keeps features whole; 0 = none");
-        t.integer("coherence", &O::coherence, 1, 8,
-            "k of k-coherence: each propagated candidate also brings its k-1 most similar "
-            "sample patches; 1 = PatchMatch's propagation alone");
-        t.choice("vote", &O::vote, { { "robust", PatchVote::Robust }, { "mean", PatchVote::Mean } },
-            "how overlapping patches are averaged: robust (each weighted by how well it "
-            "matches, Kwatra et al.'s IRLS weights; sharper) or mean");
+        detail::add_patch_terms(t);
         t.integer("isotropic", &O::isotropic, 0, 1,
             "1 = patches may also come from the sample rotated and mirrored (8 variants if "
             "square, else 4); 0 = the sample's orientation is kept");
@@ -50,8 +41,15 @@ const OptionTable<PatchOptions>& PatchOptions::table()
 
 bool PatchOptions::validate(std::string& error) const
 {
-    if (!table().check(*this, error))
-        return false;
+    return table().check(*this, error)
+        && detail::check_patch_schedule(patch, iterations, levels, error);
+}
+
+namespace detail {
+
+bool check_patch_schedule(const std::vector<int>& patch, const std::vector<int>& iterations,
+    int levels, std::string& error)
+{
     if (!std::is_sorted(patch.rbegin(), patch.rend())) {
         error = option_error("patch", format_int_list(patch), "list the sizes largest first");
         return false;
@@ -60,6 +58,8 @@ bool PatchOptions::validate(std::string& error) const
         || check_level_list(
             "iterations", format_int_list(iterations), iterations.size(), levels, error);
 }
+
+} // namespace detail
 
 int PatchOptions::iterations_at(int level) const
 {

@@ -33,9 +33,11 @@ struct PixelImage {
 /// `planes` interleaved.
 PixelImage interleave(const std::vector<Plane>& planes, int nthreads);
 
-/// `planes` interleaved with a circular margin of `pad` pixels on every side: pixel (x, y)
-/// of the torus is at (x + pad, y + pad), so a patch centred anywhere reads no wrap.
-PixelImage interleave_padded(const std::vector<Plane>& planes, int pad, int nthreads);
+/// `planes` interleaved with a margin of `pad` pixels on every side, circular (the torus)
+/// or reflected at the edges (`boundary`): pixel (x, y) is at (x + pad, y + pad), so a patch
+/// centred anywhere reads no wrap.
+PixelImage interleave_padded(const std::vector<Plane>& planes, int pad, int nthreads,
+    Boundary boundary = Boundary::Circular);
 
 /// One level of the sample, as the search and the vote read it.
 struct SampleLevel {
@@ -43,11 +45,19 @@ struct SampleLevel {
     int cell_width = 0;                    ///< its variants' width (CentreRange), 0 = one
     std::vector<QuantileTable> histograms; ///< per channel, the targets of the vote
     double variance = 0.0;                 ///< summed over channels: a patch value's spread
+    /// Per pixel (row-major), 1 where a patch centred there may be a source; empty = every
+    /// centre of the CentreRange (a fill's context: patches of known pixels only).
+    std::vector<uint8_t> valid;
+
+    /// Whether `centre` (a sample index inside the CentreRange) may be a source.
+    bool allows(uint32_t centre) const { return valid.empty() || valid[centre] != 0; }
 };
 
 /// The sample level of `planes` (variants `cell_width` wide side by side, 0 = one):
-/// interleaved, each channel's histogram, the summed variance.
-SampleLevel sample_level(const std::vector<Plane>& planes, int cell_width, int nthreads);
+/// interleaved, each channel's histogram (unless `histograms` is false), the summed
+/// variance.
+SampleLevel sample_level(
+    const std::vector<Plane>& planes, int cell_width, int nthreads, bool histograms = true);
 
 /// The number of variants isotropic=1 takes of a width x height sample: its 8 rotations and
 /// mirror images if square, else the 4 that keep its size (mirrored in x, in y, both).
@@ -110,7 +120,17 @@ struct MatchSettings {
     int radius = 0; ///< the random search's first radius; 0 = the sample's larger side
     uint64_t seed = 0, stream = 0;
     int nthreads = 0;
+    /// Per output pixel, 1 where the field is searched (a fill: patches over the hole);
+    /// null = everywhere. Elsewhere source and distance are left as they are.
+    const std::vector<uint8_t>* active = nullptr;
 };
+
+/// The field of the next finer level (w x h, its sample level's centres in `range`): each
+/// pixel's coarse source (in `coarse_range`), doubled within its cell (the variant of the
+/// sample it lies in), plus its offset from its coarse pixel's position doubled, clamped to
+/// `range`. Distances are 0.
+PatchField upsample_field(const PatchField& coarse, const CentreRange& coarse_range, int w, int h,
+    const CentreRange& range);
 
 /// Per sample centre (index y * width + x), its coherence - 1 most similar other centres
 /// (by the distance of the patches' every other pixel each way, ranked among a kd-tree's
@@ -129,20 +149,24 @@ float patch_distance(const PixelImage& padded, int pad, int x, int y, const Pixe
 /// Recomputes field.distance for `padded` (the output changed), then runs the search
 /// passes of `settings`: each pass reads the previous field and writes a new one (no pixel
 /// sees another's update of the same pass), so the result does not depend on nthreads.
-/// `similar` is similar_patches' table for this patch size (or empty).
+/// `similar` is similar_patches' table for this patch size (or empty). Only
+/// settings.active pixels are searched, and only sources sample.allows() are taken (the
+/// field's sources of active pixels must be allowed ones).
 void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
     const std::vector<uint32_t>& similar, const MatchSettings& settings, PatchField& field);
 
 /// The vote: every output pixel the weighted average of the `patch` x `patch` source
-/// patches that overlap it (circularly), channel by channel, into `out` (planes of the
-/// field's size, sample.pixels.channels of them).
+/// patches that overlap it, channel by channel, into `out` (planes of the field's size,
+/// sample.pixels.channels of them). `circular`: the output is a torus; otherwise only
+/// patches centred inside it overlap a pixel.
 void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVote kind,
-    int nthreads, std::vector<Plane>& out);
+    int nthreads, std::vector<Plane>& out, bool circular = true);
 
 /// Per output pixel, the sample pixel (index y * width + x) of those its overlapping patches
-/// voted for that is nearest (over every channel) to `average` (the vote's result).
+/// voted for that is nearest (over every channel) to `average` (the vote's result);
+/// `circular` as for vote().
 std::vector<uint32_t> nearest_votes(const SampleLevel& sample, const PatchField& field, int patch,
-    const std::vector<Plane>& average, int nthreads);
+    const std::vector<Plane>& average, int nthreads, bool circular = true);
 
 /// The mean and variance of a plane's values.
 void plane_moments(const Plane& plane, double& mean, double& variance);

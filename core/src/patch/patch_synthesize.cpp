@@ -109,30 +109,6 @@ PatchField random_field(int w, int h, const detail::CentreRange& range, uint64_t
     return field;
 }
 
-// The field of the next finer level: each pixel's coarse source, doubled within its cell
-// (the variant of the sample it lies in), plus its offset from its coarse pixel's position
-// doubled.
-PatchField upsample_field(const PatchField& coarse, const detail::CentreRange& coarse_range, int w,
-    int h, const detail::CentreRange& range)
-{
-    const int coarse_sample_width = coarse_range.width, coarse_cell = coarse_range.cell();
-    PatchField field { w, h, std::vector<uint32_t>(size_t(w) * size_t(h)),
-        std::vector<float>(size_t(w) * size_t(h), 0.0f) };
-    for (int y = 0; y < h; ++y) {
-        const int yc = std::min(coarse.height - 1, int(int64_t(y) * coarse.height / h));
-        for (int x = 0; x < w; ++x) {
-            const int xc = std::min(coarse.width - 1, int(int64_t(x) * coarse.width / w));
-            const uint32_t s = coarse.source[size_t(yc) * size_t(coarse.width) + size_t(xc)];
-            const int sx = int(s % uint32_t(coarse_sample_width));
-            const int sy = int(s / uint32_t(coarse_sample_width));
-            const int cell = sx / coarse_cell, local = sx - cell * coarse_cell;
-            field.source[size_t(y) * size_t(w) + size_t(x)] = range.clamp(
-                cell * range.cell() + 2 * local + (x - 2 * xc), 2 * sy + (y - 2 * yc));
-        }
-    }
-    return field;
-}
-
 // The guide image as a plane scaled like the automatic guidance channel: zero mean and the
 // colour channels' mean standard deviation (guidance_channel's scale).
 bool guide_plane(const OIIO::ImageBuf& guide, int sw, int sh, const std::vector<Plane>& colour,
@@ -231,7 +207,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
         const detail::CentreRange first { level.pixels.width, level.pixels.height,
             patches.front() / 2, level.cell_width };
         field = l == levels - 1 ? random_field(lw, lh, first, opt.seed)
-                                : upsample_field(field, coarse_range, lw, lh, first);
+                                : detail::upsample_field(field, coarse_range, lw, lh, first);
         coarse_range = first;
         if (l == levels - 1) { // the vote of the random field
             detail::vote(level, field, patches.front(), PatchVote::Mean, opt.nthreads, out);

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: Apache-2.0
+// texture_fill(): the checks, the mask's regions and their crops, and the final copy into
+// the image.
+#include <texsyn/fill.h>
+
+#include <algorithm>
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <texsyn/pyramid.h>
+
+#include "fill_pvt.h"
+#include "methods/method_helpers_pvt.h"
+
+namespace texsyn {
+
+namespace {
+
+using detail::PixelBox;
+
+std::string layout_text(const PlanarImage& p)
+{
+    return std::to_string(p.width()) + "x" + std::to_string(p.height()) + " with "
+        + detail::count_text(p.nchannels(), "channel");
+}
+
+// The planes of a one-channel control image of the image's size (`what`: "mask").
+bool control_plane(
+    const OIIO::ImageBuf& buf, const char* what, int w, int h, Plane& plane, std::string& error)
+{
+    PlanarImage p;
+    if (!planes_from_imagebuf(buf, p, error)) {
+        error = std::string(what) + ": " + error;
+        return false;
+    }
+    if (p.nchannels() != 1 || p.width() != w || p.height() != h) {
+        error = std::string("the ") + what + " is " + layout_text(p)
+            + "; it must be one channel of the image's size (" + std::to_string(w) + "x"
+            + std::to_string(h) + ")";
+        return false;
+    }
+    plane = std::move(p.channels[0]);
+    return true;
+}
+
+// The crop of a region: its hole box grown by `margin`, inside the w x h image.
+PixelBox crop_box(const PixelBox& hole, int margin, int w, int h)
+{
+    const PixelBox grown = hole.grown(margin);
+    return { std::max(grown.x0, 0), std::max(grown.y0, 0), std::min(grown.x1, w),
+        std::min(grown.y1, h) };
+}
+
+// A region to fill: its hole box, its crop and the crop's levels.
+struct Region {
+    PixelBox hole, crop;
+    std::vector<detail::CropLevel> levels;
+};
+
+bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
+    const FillOptions& opt, const OIIO::ImageBuf* sample, const OIIO::ImageBuf* exclude,
+    FillReport* report)
+{
+    std::string error;
+    auto fail = [&](const std::string& message) {
+        dst.errorfmt("{}", message);
+        return false;
+    };
+    if (!opt.validate(error))
+        return fail(error);
+    PlanarImage in;
+    if (!planes_from_imagebuf(image, in, error))
+        return fail("image: " + error);
+    const int w = in.width(), h = in.height();
+    Plane mask_plane, exclude_plane;
+    if (!control_plane(mask, "mask", w, h, mask_plane, error)
+        || (exclude && !control_plane(*exclude, "exclude mask", w, h, exclude_plane, error)))
+        return fail(error);
+    PlanarImage from;
+    if (sample) {
+        if (!planes_from_imagebuf(*sample, from, error))
+            return fail("sample: " + error);
+        if (from.nchannels() != in.nchannels())
+            return fail("the sample has " + detail::count_text(from.nchannels(), "channel")
+                + " and the image " + detail::count_text(in.nchannels(), "channel")
+                + "; they must match");
+    }
+    const std::vector<uint8_t> hole = detail::above_zero(mask_plane);
+    const size_t filled = size_t(std::count(hole.begin(), hole.end(), uint8_t(1)));
+    if (!sample && filled == hole.size())
+        return fail("the mask covers the whole image: give a sample to fill it from");
+    const std::vector<uint8_t> excluded
+        = exclude ? detail::above_zero(exclude_plane) : std::vector<uint8_t>();
+
+    // The regions and their crops, sized and checked before any work.
+    std::vector<Region> regions;
+    size_t work = 0;
+    int most_levels = 0;
+    for (const PixelBox& box : detail::hole_regions(hole, w, h, opt.patch.front())) {
+        const int side = std::max(box.width(), box.height());
+        const int levels = detail::fill_levels(opt, side);
+        Region r { box, crop_box(box, detail::fill_margin(opt, levels, side), w, h), {} };
+        work += size_t(r.crop.width()) * size_t(r.crop.height());
+        most_levels = std::max(most_levels, levels);
+        r.levels.resize(size_t(levels));
+        regions.push_back(std::move(r));
+    }
+    const double bytes_per_pixel = 4.0 * (4.0 * double(in.nchannels()) + 8.0) * 4.0 / 3.0;
+    if (!detail::check_memory(size_t(double(work) * bytes_per_pixel), "the fill's crops", error))
+        return fail(error);
+
+    // The result starts as the image itself: pixels outside the mask stay bit-identical.
+    if (!OIIO::ImageBufAlgo::copy(dst, image, OIIO::TypeDesc::FLOAT))
+        return fail("image: " + dst.geterror());
+    std::vector<std::vector<Plane>> pyramid;
+    if (sample) {
+        std::vector<Plane> planes = from.channels;
+        if (opt.guidance > 0.0f)
+            detail::add_guidance(planes, from.ncolor(), nullptr, opt.guidance, opt.nthreads);
+        pyramid = gaussian_pyramid(planes, most_levels, Boundary::Reflect, opt.nthreads);
+    }
+    double total = 0.0, done = 0.0;
+    for (Region& r : regions) {
+        r.levels[0] = detail::crop_level(in.channels, hole, exclude ? &excluded : nullptr, r.crop);
+        if (opt.guidance > 0.0f)
+            detail::add_guidance(
+                r.levels[0].planes, in.ncolor(), &r.levels[0].known, opt.guidance, opt.nthreads);
+        for (size_t l = 1; l < r.levels.size(); ++l)
+            r.levels[l] = detail::reduce_crop(r.levels[l - 1], opt.nthreads);
+        total += detail::fill_work(r.levels, opt);
+    }
+    const OIIO::ImageBuf& copied_from = sample ? *sample : image;
+    const int nc = in.nchannels();
+    std::vector<float> mine(static_cast<size_t>(nc)), theirs(static_cast<size_t>(nc));
+    for (size_t k = 0; k < regions.size(); ++k) {
+        Region& r = regions[k];
+        std::vector<std::vector<Plane>> levels_of_sample;
+        if (sample)
+            levels_of_sample.assign(
+                pyramid.begin(), pyramid.begin() + std::ptrdiff_t(r.levels.size()));
+        detail::RegionFill result;
+        if (!detail::fill_region(r.levels, levels_of_sample, opt, k, done, total, result, error))
+            return fail(error);
+        const int cw = r.crop.width();
+        const int source_width = sample ? from.width() : cw;
+        for (int y = r.hole.y0; y < r.hole.y1; ++y)
+            for (int x = r.hole.x0; x < r.hole.x1; ++x) {
+                const float m = std::min(1.0f, mask_plane(x, y));
+                if (!(m > 0.0f))
+                    continue;
+                const uint32_t s
+                    = result.copied[size_t(y - r.crop.y0) * size_t(cw) + size_t(x - r.crop.x0)];
+                int sx = int(s % uint32_t(source_width)), sy = int(s / uint32_t(source_width));
+                if (!sample) {
+                    sx += r.crop.x0;
+                    sy += r.crop.y0;
+                }
+                image.getpixel(x + image.xbegin(), y + image.ybegin(), mine.data());
+                copied_from.getpixel(
+                    sx + copied_from.xbegin(), sy + copied_from.ybegin(), theirs.data());
+                for (int c = 0; c < nc; ++c)
+                    mine[size_t(c)] = m == 1.0f
+                        ? theirs[size_t(c)]
+                        : (1.0f - m) * mine[size_t(c)] + m * theirs[size_t(c)];
+                dst.setpixel(x + dst.xbegin(), y + dst.ybegin(), mine.data());
+            }
+    }
+    if (opt.progress)
+        opt.progress(1.0f);
+    if (report) {
+        report->holes = int(regions.size());
+        report->filled = filled;
+        report->levels = most_levels;
+        report->work_pixels = work;
+    }
+    detail::tag_synthesis(dst.specmod(), "fill", opt.seed, FillOptions::table().format(opt));
+    dst.specmod().erase_attribute("wrapmodes");
+    return true;
+}
+
+} // namespace
+
+bool texture_fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
+    const FillOptions& opt, const OIIO::ImageBuf* sample, const OIIO::ImageBuf* exclude,
+    FillReport* report)
+{
+    return detail::guarded(
+        dst, "texture_fill", [&] { return fill(dst, image, mask, opt, sample, exclude, report); });
+}
+
+OIIO::ImageBuf texture_fill(const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
+    const FillOptions& opt, const OIIO::ImageBuf* sample, const OIIO::ImageBuf* exclude,
+    FillReport* report)
+{
+    return detail::value_form("texture_fill", [&](OIIO::ImageBuf& dst) {
+        return texture_fill(dst, image, mask, opt, sample, exclude, report);
+    });
+}
+
+} // namespace texsyn

@@ -1,0 +1,392 @@
+// SPDX-License-Identifier: Apache-2.0
+// texture_fill(): pixels outside the mask are kept bit for bit; the hole gets texture like
+// its surroundings (histogram and band energies) with no edge at the mask's boundary, far
+// closer than push-pull interpolation (the baseline every compositor has); soft masks
+// blend; exclude= keeps regions out of the sources; the cost follows the holes; same seed,
+// same pixels at any thread count; bad masks are refused.
+#include <texsyn/fill.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <gtest/gtest.h>
+
+#include "test_samples.h"
+
+using namespace texsyn;
+using namespace texsyn::test;
+
+namespace {
+
+// A one-channel w x h mask: `inside` within the ellipse of radii (rx, ry) around (cx, cy).
+OIIO::ImageBuf ellipse_mask(
+    int w, int h, float cx, float cy, float rx, float ry, float inside = 1.0f)
+{
+    OIIO::ImageBuf mask(OIIO::ImageSpec(w, h, 1, OIIO::TypeDesc::FLOAT));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float u = (x - cx) / rx, v = (y - cy) / ry;
+            const float m = u * u + v * v <= 1.0f ? inside : 0.0f;
+            mask.setpixel(x, y, &m);
+        }
+    return mask;
+}
+
+// Pixel values of channel c where `where(x, y)` holds.
+template <class Where>
+std::vector<float> values(const OIIO::ImageBuf& image, int c, Where where)
+{
+    std::vector<float> v;
+    for (int y = 0; y < image.spec().height; ++y)
+        for (int x = 0; x < image.spec().width; ++x)
+            if (where(x, y))
+                v.push_back(image.getchannel(x, y, 0, c));
+    return v;
+}
+
+// The 1-Wasserstein distance between two sets of values (their quantile functions).
+double w1(std::vector<float> a, std::vector<float> b)
+{
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    const int n = 256;
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double q = (i + 0.5) / n;
+        sum += std::abs(a[size_t(q * double(a.size()))] - b[size_t(q * double(b.size()))]);
+    }
+    return sum / n;
+}
+
+// The mean squared difference of luminance between horizontally and vertically adjacent
+// pixels (both in `a`), of the image reduced `scale` times by 2 (box): a band energy.
+template <class Where>
+double band_energy(const OIIO::ImageBuf& image, int scale, Where where)
+{
+    const int f = 1 << scale, w = image.spec().width / f, h = image.spec().height / f;
+    auto lum = [&](int x, int y) {
+        double s = 0.0;
+        for (int j = 0; j < f; ++j)
+            for (int i = 0; i < f; ++i)
+                for (int c = 0; c < 3; ++c)
+                    s += image.getchannel(x * f + i, y * f + j, 0, c) / 3.0;
+        return s / (f * f);
+    };
+    double sum = 0.0;
+    size_t n = 0;
+    for (int y = 0; y + 1 < h; ++y)
+        for (int x = 0; x + 1 < w; ++x) {
+            if (!where(x * f + f / 2, y * f + f / 2))
+                continue;
+            const double l = lum(x, y), dx = lum(x + 1, y) - l, dy = lum(x, y + 1) - l;
+            sum += dx * dx + dy * dy;
+            ++n;
+        }
+    return sum / double(std::max<size_t>(n, 1));
+}
+
+// The mask's ellipse and the ring around it (to 1.6 times its radii).
+struct Ellipse {
+    float cx, cy, rx, ry;
+    float r(int x, int y) const
+    {
+        const float u = (x - cx) / rx, v = (y - cy) / ry;
+        return std::sqrt(u * u + v * v);
+    }
+    bool hole(int x, int y) const { return r(x, y) <= 1.0f; }
+    bool ring(int x, int y) const { return r(x, y) > 1.15f && r(x, y) <= 1.6f; }
+};
+
+// How a filled image compares with its surroundings: the worst channel's W1 between hole and
+// ring, the hole's band energies over the ring's (scales 0, 1, 2; 1 = the same), and the
+// boundary step: the mean squared step across the mask's edge over that between adjacent
+// ring pixels.
+struct FillQuality {
+    double w1 = 0.0;
+    double energy[3] = { 0, 0, 0 };
+    double seam = 0.0;
+};
+
+FillQuality quality(const OIIO::ImageBuf& filled, const Ellipse& e)
+{
+    FillQuality q;
+    for (int c = 0; c < 3; ++c)
+        q.w1 = std::max(q.w1,
+            w1(values(filled, c, [&](int x, int y) { return e.hole(x, y); }),
+                values(filled, c, [&](int x, int y) { return e.ring(x, y); })));
+    for (int s = 0; s < 3; ++s)
+        q.energy[s] = band_energy(filled, s, [&](int x, int y) { return e.r(x, y) <= 0.9f; })
+            / band_energy(filled, s, [&](int x, int y) { return e.ring(x, y); });
+    double across = 0.0, inside = 0.0;
+    size_t na = 0, ni = 0;
+    const int w = filled.spec().width, h = filled.spec().height;
+    for (int y = 0; y + 1 < h; ++y)
+        for (int x = 0; x + 1 < w; ++x)
+            for (int d = 0; d < 2; ++d) {
+                const int x2 = x + (d == 0), y2 = y + (d == 1);
+                double step = 0.0;
+                for (int c = 0; c < 3; ++c) {
+                    const double v
+                        = filled.getchannel(x, y, 0, c) - filled.getchannel(x2, y2, 0, c);
+                    step += v * v;
+                }
+                if (e.hole(x, y) != e.hole(x2, y2)) {
+                    across += step;
+                    ++na;
+                } else if (e.ring(x, y) && e.ring(x2, y2)) {
+                    inside += step;
+                    ++ni;
+                }
+            }
+    q.seam = (across / double(na)) / (inside / double(ni));
+    return q;
+}
+
+std::ostream& operator<<(std::ostream& o, const FillQuality& q)
+{
+    return o << "W1 " << q.w1 << ", band energy ratios " << q.energy[0] << " " << q.energy[1] << " "
+             << q.energy[2] << ", seam ratio " << q.seam;
+}
+
+// The baseline: OIIO's push-pull hole filling (colour premultiplied by 1 - mask, which is
+// the alpha).
+OIIO::ImageBuf pushpull(const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask)
+{
+    const int w = image.spec().width, h = image.spec().height;
+    OIIO::ImageSpec spec(w, h, 4, OIIO::TypeDesc::FLOAT);
+    spec.alpha_channel = 3;
+    OIIO::ImageBuf rgba(spec);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float keep = 1.0f - mask.getchannel(x, y, 0, 0);
+            float p[4] = { 0, 0, 0, keep };
+            for (int c = 0; c < 3; ++c)
+                p[c] = keep * image.getchannel(x, y, 0, c);
+            rgba.setpixel(x, y, p);
+        }
+    OIIO::ImageBuf filled = OIIO::ImageBufAlgo::fillholes_pushpull(rgba);
+    return OIIO::ImageBufAlgo::channels(filled, 3, {});
+}
+
+FillOptions seeded(uint64_t seed, int nthreads = 0)
+{
+    FillOptions opt;
+    opt.seed = seed;
+    opt.nthreads = nthreads;
+    return opt;
+}
+
+// Whether a and b hold the same bits everywhere `keep(x, y)` holds.
+template <class Keep>
+bool identical_where(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, Keep keep)
+{
+    const int nc = a.nchannels();
+    std::vector<float> pa(static_cast<size_t>(nc)), pb(static_cast<size_t>(nc));
+    for (int y = 0; y < a.spec().height; ++y)
+        for (int x = 0; x < a.spec().width; ++x)
+            if (keep(x, y)) {
+                a.getpixel(x, y, pa.data());
+                b.getpixel(x, y, pb.data());
+                if (std::memcmp(pa.data(), pb.data(), pa.size() * sizeof(float)) != 0)
+                    return false;
+            }
+    return true;
+}
+
+} // namespace
+
+// Bricks with an elliptical hole across three courses: the fill matches its surroundings'
+// histogram and band energies and leaves no step at the mask's edge; push-pull is smooth.
+TEST(Fill, BricksHoleLooksLikeItsSurroundings)
+{
+    const OIIO::ImageBuf bricks = linear_sample("bricks.png");
+    const Ellipse e { 128.0f, 120.0f, 40.0f, 30.0f };
+    const OIIO::ImageBuf mask = ellipse_mask(256, 256, e.cx, e.cy, e.rx, e.ry);
+    FillReport report;
+    const OIIO::ImageBuf filled = texture_fill(bricks, mask, seeded(3), nullptr, nullptr, &report);
+    ASSERT_FALSE(filled.has_error()) << filled.geterror();
+    EXPECT_EQ(report.holes, 1);
+    const OIIO::ImageBuf smooth = pushpull(bricks, mask);
+    const FillQuality ours = quality(filled, e), baseline = quality(smooth, e),
+                      original = quality(bricks, e);
+    std::cout << "fill: " << ours << "\npush-pull: " << baseline << "\noriginal: " << original
+              << "\n";
+    // Measured (seed 3): W1 0.021 against push-pull's 0.032; band energies 0.76, 0.75, 0.75
+    // of the ring's (push-pull 0.03, 0.05, 0.15); seam 2.26, the original's 1.65.
+    EXPECT_LT(ours.w1, 0.025);
+    EXPECT_LT(ours.w1, 0.7 * baseline.w1);
+    for (int s = 0; s < 3; ++s) {
+        EXPECT_GT(ours.energy[s], 0.55) << "scale " << s;
+        EXPECT_LT(ours.energy[s], 1.5) << "scale " << s;
+        EXPECT_LT(baseline.energy[s], 0.2) << "scale " << s;
+    }
+    EXPECT_LT(ours.seam, 1.5 * original.seam);
+}
+
+// Outside the mask every channel (alpha and an extra channel too) keeps its bits; inside,
+// each pixel is one of the image's pixels.
+TEST(Fill, UnmaskedPixelsAreBitIdentical)
+{
+    Plane alpha;
+    const OIIO::ImageBuf stucco = stucco_with_alpha(alpha);
+    const OIIO::ImageBuf mask = ellipse_mask(128, 128, 60.0f, 70.0f, 18.0f, 12.0f);
+    const OIIO::ImageBuf filled = texture_fill(stucco, mask, seeded(1));
+    ASSERT_FALSE(filled.has_error()) << filled.geterror();
+    EXPECT_EQ(filled.nchannels(), 4);
+    EXPECT_TRUE(identical_where(
+        filled, stucco, [&](int x, int y) { return mask.getchannel(x, y, 0, 0) == 0.0f; }));
+    EXPECT_FALSE(identical_where(
+        filled, stucco, [&](int x, int y) { return mask.getchannel(x, y, 0, 0) > 0.0f; }));
+    // A filled pixel is a copy of a pixel outside the mask.
+    std::vector<std::array<float, 4>> known;
+    for (int y = 0; y < 128; ++y)
+        for (int x = 0; x < 128; ++x)
+            if (mask.getchannel(x, y, 0, 0) == 0.0f) {
+                std::array<float, 4> p;
+                stucco.getpixel(x, y, p.data());
+                known.push_back(p);
+            }
+    std::sort(known.begin(), known.end());
+    for (int y = 58; y < 82; y += 3)
+        for (int x = 44; x < 76; x += 3) {
+            std::array<float, 4> p;
+            filled.getpixel(x, y, p.data());
+            EXPECT_TRUE(std::binary_search(known.begin(), known.end(), p)) << x << "," << y;
+        }
+}
+
+TEST(Fill, AnEmptyMaskChangesNothing)
+{
+    const OIIO::ImageBuf grass = linear_crop("grass.png", 96, 80);
+    const OIIO::ImageBuf filled
+        = texture_fill(grass, ellipse_mask(96, 80, 0, 0, 0.1f, 0.1f, 0.0f), seeded(1));
+    ASSERT_FALSE(filled.has_error()) << filled.geterror();
+    EXPECT_TRUE(identical_where(filled, grass, [](int, int) { return true; }));
+}
+
+// A soft mask blends: m x the hard mask's fill + (1 - m) x the image.
+TEST(Fill, SoftMasksBlend)
+{
+    const OIIO::ImageBuf stucco = linear_sample("stucco_yellow.png");
+    const OIIO::ImageBuf hard = ellipse_mask(128, 128, 64.0f, 64.0f, 16.0f, 16.0f, 1.0f);
+    const OIIO::ImageBuf soft = ellipse_mask(128, 128, 64.0f, 64.0f, 16.0f, 16.0f, 0.25f);
+    const OIIO::ImageBuf a = texture_fill(stucco, hard, seeded(5));
+    const OIIO::ImageBuf b = texture_fill(stucco, soft, seeded(5));
+    ASSERT_FALSE(a.has_error() || b.has_error()) << a.geterror() << b.geterror();
+    const OIIO::ImageBuf expected = OIIO::ImageBufAlgo::add(
+        OIIO::ImageBufAlgo::mul(a, 0.25f), OIIO::ImageBufAlgo::mul(stucco, 0.75f));
+    const auto diff = OIIO::ImageBufAlgo::compare(b, expected, 1e-6f, 1e-6f);
+    EXPECT_EQ(diff.nfail, 0u) << diff.maxerror;
+}
+
+// exclude= keeps a red square (another marker) out of the patches the fill copies.
+TEST(Fill, ExcludedRegionsAreNeverCopied)
+{
+    OIIO::ImageBuf stucco = linear_sample("stucco_yellow.png");
+    const float red[3] = { 1.0f, 0.0f, 0.0f };
+    OIIO::ImageBufAlgo::fill(stucco, red, OIIO::ROI(80, 100, 20, 40));
+    OIIO::ImageBuf exclude(OIIO::ImageSpec(128, 128, 1, OIIO::TypeDesc::FLOAT));
+    const float one = 1.0f;
+    OIIO::ImageBufAlgo::fill(exclude, &one, OIIO::ROI(80, 100, 20, 40));
+    const OIIO::ImageBuf mask = ellipse_mask(128, 128, 64.0f, 80.0f, 30.0f, 24.0f);
+    auto reds = [&](const OIIO::ImageBuf& img) {
+        return values(img, 1, [&](int x, int y) {
+            return mask.getchannel(x, y, 0, 0) > 0.0f && img.getchannel(x, y, 0, 1) == 0.0f;
+        }).size();
+    };
+    const OIIO::ImageBuf excluded = texture_fill(stucco, mask, seeded(2), nullptr, &exclude);
+    ASSERT_FALSE(excluded.has_error()) << excluded.geterror();
+    EXPECT_EQ(reds(excluded), 0u);
+}
+
+// Another sample fills a mask that covers the whole image; without one, that is an error.
+TEST(Fill, AFullMaskNeedsASample)
+{
+    const OIIO::ImageBuf grass = linear_crop("grass.png", 64, 64);
+    const OIIO::ImageBuf full = ellipse_mask(64, 64, 32, 32, 1000.0f, 1000.0f);
+    OIIO::ImageBuf dst;
+    EXPECT_FALSE(texture_fill(dst, grass, full, seeded(1)));
+    EXPECT_NE(dst.geterror().find("covers the whole image"), std::string::npos) << dst.geterror();
+    const OIIO::ImageBuf stucco = linear_sample("stucco_yellow.png");
+    const OIIO::ImageBuf filled = texture_fill(grass, full, seeded(1), &stucco);
+    ASSERT_FALSE(filled.has_error()) << filled.geterror();
+    // Every pixel now comes from the stucco: its colours, not the grass's.
+    auto all = [](int, int) { return true; };
+    for (int c = 0; c < 3; ++c)
+        EXPECT_LT(w1(values(filled, c, all), values(stucco, c, all)),
+            0.5 * w1(values(grass, c, all), values(stucco, c, all)))
+            << c;
+}
+
+// The work is the holes' crops: the same hole in a 4x larger image costs the same pixels,
+// and two far-apart holes are two regions.
+TEST(Fill, CostFollowsTheHolesNotTheImage)
+{
+    const OIIO::ImageBuf stucco = linear_sample("stucco_yellow.png");
+    auto tiled = [&](int n) {
+        OIIO::ImageBuf big(OIIO::ImageSpec(128 * n, 128 * n, 3, OIIO::TypeDesc::FLOAT));
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                OIIO::ImageBufAlgo::paste(big, 128 * i, 128 * j, 0, 0, stucco);
+        return big;
+    };
+    FillReport small, large;
+    ASSERT_FALSE(texture_fill(
+        tiled(4), ellipse_mask(512, 512, 256, 256, 12, 12), seeded(1), nullptr, nullptr, &small)
+                     .has_error());
+    ASSERT_FALSE(texture_fill(
+        tiled(8), ellipse_mask(1024, 1024, 256, 256, 12, 12), seeded(1), nullptr, nullptr, &large)
+                     .has_error());
+    EXPECT_EQ(small.work_pixels, large.work_pixels);
+    EXPECT_LT(large.work_pixels, size_t(1024 * 1024 / 8));
+
+    OIIO::ImageBuf two = ellipse_mask(512, 512, 100, 100, 10, 10);
+    OIIO::ImageBufAlgo::add(two, two, ellipse_mask(512, 512, 400, 420, 10, 10));
+    FillReport both;
+    ASSERT_FALSE(texture_fill(tiled(4), two, seeded(1), nullptr, nullptr, &both).has_error());
+    EXPECT_EQ(both.holes, 2);
+}
+
+TEST(Fill, ResultIgnoresThreadCount)
+{
+    const OIIO::ImageBuf bricks = linear_crop("bricks.png", 160, 160);
+    const OIIO::ImageBuf mask = ellipse_mask(160, 160, 70, 90, 20, 26);
+    const OIIO::ImageBuf one = texture_fill(bricks, mask, seeded(9, 1));
+    const OIIO::ImageBuf two = texture_fill(bricks, mask, seeded(9, 2));
+    ASSERT_FALSE(one.has_error() || two.has_error());
+    EXPECT_TRUE(identical_where(one, two, [](int, int) { return true; }));
+}
+
+TEST(Fill, BadMasksAreRefused)
+{
+    const OIIO::ImageBuf grass = linear_crop("grass.png", 64, 64);
+    OIIO::ImageBuf dst;
+    EXPECT_FALSE(texture_fill(dst, grass, ellipse_mask(63, 64, 30, 30, 5, 5), seeded(1)));
+    EXPECT_NE(dst.geterror().find("the mask is 63x64 with 1 channel; it must be one channel of "
+                                  "the image's size (64x64)"),
+        std::string::npos)
+        << dst.geterror();
+    OIIO::ImageBuf rgb_mask(OIIO::ImageSpec(64, 64, 3, OIIO::TypeDesc::FLOAT));
+    dst.clear();
+    EXPECT_FALSE(texture_fill(dst, grass, rgb_mask, seeded(1)));
+    EXPECT_NE(dst.geterror().find("3 channels"), std::string::npos) << dst.geterror();
+    OIIO::ImageBuf nan_mask = ellipse_mask(64, 64, 30, 30, 5, 5);
+    const float nan = std::nanf("");
+    nan_mask.setpixel(3, 4, &nan);
+    dst.clear();
+    EXPECT_FALSE(texture_fill(dst, grass, nan_mask, seeded(1)));
+    EXPECT_NE(dst.geterror().find("mask: "), std::string::npos) << dst.geterror();
+    // A hole too large for its small image at the levels asked for.
+    FillOptions opt = seeded(1);
+    opt.levels = 5;
+    opt.iterations = { 2 };
+    dst.clear();
+    EXPECT_FALSE(texture_fill(dst, grass, ellipse_mask(64, 64, 32, 32, 20, 20), opt));
+    EXPECT_NE(dst.geterror().find("no 11x11 patch of known pixels"), std::string::npos)
+        << dst.geterror();
+}
