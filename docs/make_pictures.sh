@@ -83,8 +83,8 @@ surface_pictures() {
   rm -rf "$tmp"
 }
 # docs/fill.md: a hole cut into a bundled sample (black), filled by OIIO's push-pull (the
-# baseline) and by --fill (seed 1), each a 256x256 crop shown 2x; the masks are blobs made
-# with oiiotool (boxes, blurred, thresholded).
+# baseline) and by --fill (seed 1), shown 2x; the masks are blobs made with oiiotool (boxes,
+# blurred, thresholded). Then --tileable.
 fill_pictures() {
   local tmp
   tmp=$(mktemp -d)
@@ -105,11 +105,17 @@ fill_pictures() {
   one tiles_green "$tmp/tiles_hole.png" tiles
   blob 128x128 50,15,75,100 40,45,90,65 "$tmp/wood_hole.png"
   one wood_grain "$tmp/wood_hole.png" wood
+  # --tileable: the sample tiled 2x2 (its seams show), then the result tiled 2x2 (seed 1).
+  for s in rust tiles_green bricks; do
+    "$texsyn" --seed 1 "$samples/$s.png" --tileable -o "$tmp/tile.png"
+    oiiotool "$samples/$s.png" --dup --mosaic 2x1 --dup --mosaic 1x2 "$tmp/tile.png" --dup \
+        --mosaic 2x1 --dup --mosaic 1x2 --mosaic:pad=8 2x1 -d uint8 -o "$out/tileable_$s.png"
+  done
   rm -rf "$tmp"
 }
 if [ "${2:-}" = fill ]; then
   fill_pictures
-  ls -la "$out"/fill_*
+  ls -la "$out"/fill_* "$out"/tileable_*
   exit 0
 fi
 if [ "${2:-}" = surfaces ]; then

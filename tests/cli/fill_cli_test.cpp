@@ -79,3 +79,27 @@ TEST_F(FillCli, BadMasksAreRefusedWithOneLine)
         EXPECT_FALSE(fs::exists(dir / "out.png")) << c.args;
     }
 }
+
+// --tileable: the result is marked as tiling, -v reports the band and the changed fraction,
+// and a band too wide is refused with one line and no output.
+TEST_F(FillCli, TileableMarksItsResultAndRefusesTooWideABand)
+{
+    CliRun r = texsyn("--seed 1 -v plate.exr --tileable -o tile.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("re-synthesized a 48 px band across the seams; changed 34.0% of the "
+                         "pixels"),
+        std::string::npos)
+        << r.err;
+    OIIO::ImageBuf tile((dir / "tile.exr").string());
+    ASSERT_TRUE(tile.read()) << tile.geterror();
+    EXPECT_EQ(tile.spec().get_string_attribute("wrapmodes"), "periodic,periodic");
+    EXPECT_EQ(tile.spec().get_string_attribute("synth:method"), "tileable");
+
+    r = texsyn("bricks.png --tileable:band=90 -o out.png");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.first_err_line(),
+        "texsyn ERROR: --tileable : band=90 : too wide for a 256x256 image (at most a third of "
+        "its shorter side, 85)")
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+}

@@ -22,8 +22,8 @@ namespace texsyn {
 
 /// Options of a fill.
 struct FillOptions {
-    /// Gaussian pyramid levels, filled coarse to fine; 0 = from the size of each hole (its
-    /// larger side about three of the largest patches at the coarsest level).
+    /// Gaussian pyramid levels, filled coarse to fine; 0 = from each hole's thickness (about
+    /// one of the largest patches at the coarsest level; at least 2).
     int levels = 0;
     /// Patch sizes (odd), largest first, as PatchOptions::patch.
     std::vector<int> patch = { 11, 7 };
@@ -89,5 +89,40 @@ bool texture_fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::
 OIIO::ImageBuf texture_fill(const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
     const FillOptions& opt, const OIIO::ImageBuf* sample = nullptr,
     const OIIO::ImageBuf* exclude = nullptr, FillReport* report = nullptr);
+
+/// Options of make_tileable().
+struct TileableOptions {
+    /// The fill of the band (its context is the whole image, so `context` is not used).
+    FillOptions options;
+    /// Width in pixels of the band across each wrap-around seam that is re-synthesized;
+    /// 0 = automatic: 3/16 of the image's shorter side, at least two of the largest
+    /// patches. At most a third of the shorter side.
+    int band = 0;
+
+    /// The table behind `--tileable:name=value`, recipes, synth:options and the docs.
+    static const OptionTable<TileableOptions>& table();
+
+    /// Checks the options alone. False with a message.
+    bool validate(std::string& error) const;
+};
+
+/// What make_tileable() changed.
+struct TileableReport {
+    int band = 0;                  ///< the band's width in pixels (the automatic choice if 0)
+    double changed_fraction = 0.0; ///< fraction of the pixels whose value changed
+};
+
+/// The image made to tile at its own size: the image is rolled by half its size so that
+/// its wrap-around seams cross in the middle, a band `opt.band` wide along them is filled
+/// (texture_fill) from the rest of the image, and the result is rolled back. Pixels outside
+/// the band (a frame away from the image's edges) are the image's, bit-identical; the result
+/// has no seam where it wraps around, and carries wrapmodes "periodic,periodic".
+///
+/// Fails (false, message in dst) as texture_fill() does, and on a band too wide for the
+/// image.
+bool make_tileable(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const TileableOptions& opt,
+    TileableReport* report = nullptr);
+OIIO::ImageBuf make_tileable(
+    const OIIO::ImageBuf& image, const TileableOptions& opt, TileableReport* report = nullptr);
 
 } // namespace texsyn

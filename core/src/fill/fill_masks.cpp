@@ -216,19 +216,47 @@ void add_guidance(std::vector<Plane>& planes, int ncolour, const std::vector<uin
     planes.push_back(std::move(g));
 }
 
-int fill_levels(const FillOptions& opt, int hole_side)
+int hole_thickness(const std::vector<uint8_t>& hole, int width, const PixelBox& box)
+{
+    // Two-pass chessboard distance transform over the box (Rosenfeld & Pfaltz).
+    const int w = box.width(), h = box.height();
+    std::vector<int> d(size_t(w) * size_t(h));
+    auto at = [&](int x, int y) -> int {
+        return x < 0 || y < 0 || x >= w || y >= h ? 0 : d[size_t(y) * size_t(w) + size_t(x)];
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            int& v = d[size_t(y) * size_t(w) + size_t(x)];
+            v = hole[size_t(box.y0 + y) * size_t(width) + size_t(box.x0 + x)]
+                ? 1 + std::min({ at(x - 1, y), at(x - 1, y - 1), at(x, y - 1), at(x + 1, y - 1) })
+                : 0;
+        }
+    int largest = 0;
+    for (int y = h - 1; y >= 0; --y)
+        for (int x = w - 1; x >= 0; --x) {
+            int& v = d[size_t(y) * size_t(w) + size_t(x)];
+            if (v > 0)
+                v = std::min({ v, 1 + at(x + 1, y), 1 + at(x + 1, y + 1), 1 + at(x, y + 1),
+                    1 + at(x - 1, y + 1) });
+            largest = std::max(largest, v);
+        }
+    return std::max(1, 2 * largest - 1);
+}
+
+int fill_levels(const FillOptions& opt, int thickness)
 {
     if (opt.levels > 0)
         return opt.levels;
-    const double across = double(hole_side) / (3.0 * double(opt.patch.front()));
-    return std::clamp(1 + int(std::ceil(std::log2(std::max(across, 1.0)))), 1, 8);
+    // At least two: from a push-pull start, a single level averages into a smudge.
+    const double across = double(thickness) / double(opt.patch.front());
+    return std::clamp(1 + int(std::lround(std::log2(std::max(across, 1.0)))), 2, 8);
 }
 
-int fill_margin(const FillOptions& opt, int levels, int hole_side)
+int fill_margin(const FillOptions& opt, int levels, int thickness)
 {
     if (opt.context > 0)
         return opt.context;
-    return std::max((3 * opt.patch.front()) << (levels - 1), (hole_side + 1) / 2);
+    return std::max((3 * opt.patch.front()) << (levels - 1), (thickness + 1) / 2);
 }
 
 } // namespace texsyn::detail

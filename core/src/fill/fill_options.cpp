@@ -18,8 +18,8 @@ const OptionTable<FillOptions>& FillOptions::table()
     return declared_table<FillOptions>([](OptionTable<FillOptions>& t) {
         using O = FillOptions;
         t.integer("levels", &O::levels, 0, kMaxLevels,
-             "Gaussian pyramid levels, filled coarse to fine; 0 = from each hole's size (about "
-             "three of the largest patches across at the coarsest level)")
+             "Gaussian pyramid levels, filled coarse to fine; 0 = from each hole's thickness "
+             "(about one of the largest patches at the coarsest level; at least 2)")
             .shared();
         detail::add_patch_schedule(t, kMaxLevels);
         t.integer("context", &O::context, 0, 1 << 16,

@@ -70,14 +70,19 @@ void add_guidance(std::vector<Plane>& planes, int ncolour, const std::vector<uin
 /// ones (OIIO's fillholes_pushpull).
 void pushpull_fill(CropLevel& level, int nthreads);
 
-/// The levels a region with a `hole_side`-pixel larger side is filled with: opt.levels, or
-/// the automatic choice (the hole about three of the largest patches across at the
-/// coarsest level).
-int fill_levels(const FillOptions& opt, int hole_side);
+/// The thickness of the hole inside `box` (of a `width`-wide mask): the side of the largest
+/// square of hole pixels, 2 d - 1 for the largest chessboard distance d of a hole pixel to
+/// a pixel outside the hole (or the box's edge).
+int hole_thickness(const std::vector<uint8_t>& hole, int width, const PixelBox& box);
+
+/// The levels a region whose hole is `thickness` pixels thick is filled with: opt.levels,
+/// or the automatic choice (the hole about one largest patch thick at the coarsest level;
+/// at least two levels).
+int fill_levels(const FillOptions& opt, int thickness);
 
 /// The margin around a region's hole box its crop takes: opt.context, or enough for
-/// `levels` levels (three largest patches at the coarsest) and half the hole's larger side.
-int fill_margin(const FillOptions& opt, int levels, int hole_side);
+/// `levels` levels (three largest patches at the coarsest) and half the hole's thickness.
+int fill_margin(const FillOptions& opt, int levels, int thickness);
 
 /// What filling one region gives: per pixel of the crop's finest level, the pixel whose
 /// value it copies, as an index into the source (the image's crop: y * crop width + x; or

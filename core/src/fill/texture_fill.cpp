@@ -97,9 +97,9 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     size_t work = 0;
     int most_levels = 0;
     for (const PixelBox& box : detail::hole_regions(hole, w, h, opt.patch.front())) {
-        const int side = std::max(box.width(), box.height());
-        const int levels = detail::fill_levels(opt, side);
-        Region r { box, crop_box(box, detail::fill_margin(opt, levels, side), w, h), {} };
+        const int thickness = detail::hole_thickness(hole, w, box);
+        const int levels = detail::fill_levels(opt, thickness);
+        Region r { box, crop_box(box, detail::fill_margin(opt, levels, thickness), w, h), {} };
         work += size_t(r.crop.width()) * size_t(r.crop.height());
         most_levels = std::max(most_levels, levels);
         r.levels.resize(size_t(levels));

@@ -21,6 +21,7 @@ const Method& choosy_method();
 const Method& surface_method();
 const Method& patch_method();
 const Method& fill_method();
+const Method& tileable_method();
 const Method& cascade_method();
 const Method& analyze_method();
 const Method& check_method();
@@ -38,6 +39,7 @@ const std::vector<const Method*>& methods()
         &detail::surface_method(),
         &detail::patch_method(),
         &detail::fill_method(),
+        &detail::tileable_method(),
         &detail::cascade_method(),
         &detail::analyze_method(),
         &detail::check_method(),
