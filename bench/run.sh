@@ -4,7 +4,8 @@
 # workload's) and prints median wall time and peak memory (a workload of one repetition:
 # its time).
 # usage: bench/run.sh BUILD_DIR [filter-regex] [program: pyramid_bench (default), solid_bench,
-#        neighborhood_bench, choosy_bench, cascade_bench, patch_bench]
+#        neighborhood_bench, choosy_bench, cascade_bench, patch_bench, surface_bench,
+#        fill_bench]
 set -euo pipefail
 bench="$1/bench/${3:-pyramid_bench}"
 filter="${2:-.}"

@@ -22,8 +22,9 @@ namespace texsyn {
 
 /// Options of a fill.
 struct FillOptions {
-    /// Gaussian pyramid levels, filled coarse to fine; 0 = from each hole's thickness (about
-    /// one of the largest patches at the coarsest level; at least 2).
+    /// Gaussian pyramid levels, filled coarse to fine; 0 = from each hole's thickness (at
+    /// most three of the largest patches at the coarsest level; at least 3 where the image
+    /// is large enough).
     int levels = 0;
     /// Patch sizes (odd), largest first, as PatchOptions::patch.
     std::vector<int> patch = { 11, 7 };

@@ -247,16 +247,16 @@ int fill_levels(const FillOptions& opt, int thickness)
 {
     if (opt.levels > 0)
         return opt.levels;
-    // At least two: from a push-pull start, a single level averages into a smudge.
-    const double across = double(thickness) / double(opt.patch.front());
-    return std::clamp(1 + int(std::lround(std::log2(std::max(across, 1.0)))), 2, 8);
+    // At least three: with fewer, thin holes and bands come out smudged.
+    const double across = double(thickness) / (3.0 * double(opt.patch.front()));
+    return std::clamp(1 + int(std::ceil(std::log2(std::max(across, 1.0)))), 3, 8);
 }
 
 int fill_margin(const FillOptions& opt, int levels, int thickness)
 {
     if (opt.context > 0)
         return opt.context;
-    return std::max((3 * opt.patch.front()) << (levels - 1), (thickness + 1) / 2);
+    return std::max((2 * opt.patch.front()) << (levels - 1), (thickness + 1) / 2);
 }
 
 } // namespace texsyn::detail

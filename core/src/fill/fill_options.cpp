@@ -19,7 +19,8 @@ const OptionTable<FillOptions>& FillOptions::table()
         using O = FillOptions;
         t.integer("levels", &O::levels, 0, kMaxLevels,
              "Gaussian pyramid levels, filled coarse to fine; 0 = from each hole's thickness "
-             "(about one of the largest patches at the coarsest level; at least 2)")
+             "(at most three of the largest patches at the coarsest level; at least 3 where "
+             "the image is large enough)")
             .shared();
         detail::add_patch_schedule(t, kMaxLevels);
         t.integer("context", &O::context, 0, 1 << 16,

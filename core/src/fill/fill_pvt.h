@@ -76,12 +76,13 @@ void pushpull_fill(CropLevel& level, int nthreads);
 int hole_thickness(const std::vector<uint8_t>& hole, int width, const PixelBox& box);
 
 /// The levels a region whose hole is `thickness` pixels thick is filled with: opt.levels,
-/// or the automatic choice (the hole about one largest patch thick at the coarsest level;
-/// at least two levels).
+/// or the automatic choice (the hole at most three of the largest patches thick at the
+/// coarsest level; at least three levels, which texture_fill lowers for a crop too small
+/// to hold them).
 int fill_levels(const FillOptions& opt, int thickness);
 
 /// The margin around a region's hole box its crop takes: opt.context, or enough for
-/// `levels` levels (three largest patches at the coarsest) and half the hole's thickness.
+/// `levels` levels (two largest patches at the coarsest) and half the hole's thickness.
 int fill_margin(const FillOptions& opt, int levels, int thickness);
 
 /// What filling one region gives: per pixel of the crop's finest level, the pixel whose

@@ -98,8 +98,12 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     int most_levels = 0;
     for (const PixelBox& box : detail::hole_regions(hole, w, h, opt.patch.front())) {
         const int thickness = detail::hole_thickness(hole, w, box);
-        const int levels = detail::fill_levels(opt, thickness);
+        int levels = detail::fill_levels(opt, thickness);
         Region r { box, crop_box(box, detail::fill_margin(opt, levels, thickness), w, h), {} };
+        // The automatic choice, lowered until the coarsest crop holds two largest patches.
+        while (opt.levels == 0 && levels > 1
+            && std::min(r.crop.width(), r.crop.height()) >> (levels - 1) < 2 * opt.patch.front())
+            --levels;
         work += size_t(r.crop.width()) * size_t(r.crop.height());
         most_levels = std::max(most_levels, levels);
         r.levels.resize(size_t(levels));
