@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // --apply-map MAP IMAGE: one neighbourhood synthesis drives every map of a material.
 #include "cli_error.h"
+#include "command_line.h"
 #include "commands.h"
 #include "quiet_stderr.h"
 
@@ -11,9 +12,12 @@
 
 namespace texsyn::cli {
 
-void run_apply_map(CliState& state, const std::string& map_file, const std::string& image_file)
+void run_apply_map(CliState& state, const std::string& command_arg, const std::string& map_file,
+    const std::string& image_file)
 {
-    const std::string command = "--apply-map " + map_file + " " + image_file;
+    const std::string command = command_arg + " " + map_file + " " + image_file;
+    ApplyMapOptions opt;
+    opt.normal = apply_map_normal(command_arg);
     OIIO::ImageBuf map;
     std::string error;
     bool ok;
@@ -28,7 +32,7 @@ void run_apply_map(CliState& state, const std::string& map_file, const std::stri
         throw CliError(command + " : " + image_file + " is an analysis, not an image");
     StackItem img = std::move(state.stack.pop(command, 1)[0]);
     OIIO::ImageBuf remapped;
-    if (!apply_source_map(remapped, map, img.file_pixels))
+    if (!apply_source_map(remapped, map, img.file_pixels, opt))
         throw CliError(command + " : " + remapped.geterror());
     // The image's own values, rearranged: it goes on as an input read in its colour space,
     // and is written in that space unless --tocolorspace says otherwise (so a height or

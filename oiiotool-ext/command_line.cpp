@@ -68,6 +68,23 @@ std::pair<std::string, std::string> split_command(const std::string& a)
     return { a.substr(0, colon), a.substr(colon + 1) };
 }
 
+bool is_apply_map(const std::string& arg)
+{
+    return split_command(arg).first == "--apply-map";
+}
+
+NormalMap apply_map_normal(const std::string& arg)
+{
+    const std::string modifier = split_command(arg).second;
+    if (modifier.empty() || modifier == "normal=none")
+        return NormalMap::None;
+    if (modifier == "normal=opengl")
+        return NormalMap::OpenGL;
+    if (modifier == "normal=directx")
+        return NormalMap::DirectX;
+    throw CliError(arg + " : expected --apply-map:normal=opengl, normal=directx or normal=none");
+}
+
 namespace {
 
 // What the check knows of each item the run will put on the stack.
@@ -243,7 +260,7 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             last_output = i;
         else if (takes_argument(args[i]))
             ++i;
-        else if (args[i] == "--apply-map")
+        else if (is_apply_map(args[i]))
             i += 2;
     }
     auto check_written = [&](size_t i) {
@@ -284,7 +301,8 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
                 check_written(i - 1);
                 colorspaces.push_back(a + " " + v);
             }
-        } else if (a == "--apply-map") {
+        } else if (is_apply_map(a)) {
+            apply_map_normal(a);
             if (i + 2 >= args.size())
                 throw CliError("--apply-map : needs two arguments, the source map and the image "
                                "(--apply-map coords.exr height.png)");

@@ -4,6 +4,8 @@
 // line before any work is done, so that a bad one never leaves partial output behind.
 #pragma once
 
+#include <texsyn/source_map.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +22,13 @@ bool is_flag(const std::string& arg);
 
 /// "--pyramid:size=8x8" -> ("--pyramid", "size=8x8").
 std::pair<std::string, std::string> split_command(const std::string& arg);
+
+/// Whether `arg` is --apply-map, with or without its modifier (--apply-map:normal=opengl).
+bool is_apply_map(const std::string& arg);
+
+/// The normal-map convention an --apply-map argument names (none without the modifier);
+/// throws CliError for any other modifier or value.
+NormalMap apply_map_normal(const std::string& arg);
 
 /// What check_command_line decided.
 enum class Early { Run, Exit };

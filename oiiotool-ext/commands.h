@@ -40,7 +40,8 @@ void write_recipe(CliState& state, const std::string& filename);
 
 /// --apply-map MAP IMAGE: reads IMAGE (an input like any other), rearranges its pixels by
 /// the source map MAP, and pushes the result, which keeps IMAGE's colour space on output.
-void run_apply_map(CliState& state, const std::string& map_file, const std::string& image_file);
+void run_apply_map(CliState& state, const std::string& command_arg, const std::string& map_file,
+    const std::string& image_file);
 
 /// Prints --help, --list-methods and --version text to stdout.
 void print_help();

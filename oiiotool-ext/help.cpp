@@ -106,9 +106,12 @@ void print_help()
         "    --recipe FILE.texsyn  Write the recipe of the current result: OIIO tools open\n"
         "                          it as an image with texsyn's format plugin\n"
         "    --apply-map MAP IMAGE Read IMAGE (aligned with the sample of a run that wrote\n"
-        "                          the source map MAP with map=) and rearrange its pixels by\n"
-        "                          MAP: height, normal or roughness maps follow the colour.\n"
-        "                          Written in IMAGE's colour space by default\n"
+        "                          the source map MAP with map=; or a whole multiple or\n"
+        "                          fraction of its size) and rearrange its pixels by MAP:\n"
+        "                          height, normal or roughness maps follow the colour.\n"
+        "                          Written in IMAGE's colour space by default.\n"
+        "                          --apply-map:normal=opengl|directx turns a normal map's\n"
+        "                          vectors with the pixels copied turned (isotropic=1)\n"
         "\n"
         "Which method for which texture (docs/which-method.md):\n",
         version());

@@ -52,8 +52,8 @@ size_t run_argument(CliState& state, const std::vector<std::string>& args, size_
             else
                 state.stack.top(a).output_colorspace = v;
         }
-    } else if (a == "--apply-map") {
-        run_apply_map(state, args[i + 1], args[i + 2]);
+    } else if (is_apply_map(a)) {
+        run_apply_map(state, a, args[i + 1], args[i + 2]);
         i += 2;
     } else if (is_flag(a)) {
         return i;

@@ -117,15 +117,34 @@ TEST_F(Cli, BadApplyMapInputIsRefused)
     expect_failure("--apply-map missing.exr stucco.png -o x.png",
         "texsyn ERROR: missing.exr: no such file", inputs);
     expect_failure("--apply-map out.exr stucco.png -o x.png",
-        "texsyn ERROR: --apply-map out.exr stucco.png : the source map has 3 channels; expected "
-        "2 (x, y) as --neighborhood:map=, --choosy:map= and --patch:map= write",
+        "texsyn ERROR: --apply-map out.exr stucco.png : the source map has the channels R, G, B; "
+        "expected the channels x, y (and t) that --neighborhood:map=, --choosy:map= and "
+        "--patch:map= write",
         inputs);
     write_sample("small.png", 3, OIIO::TypeUInt8);
-    expect_failure("--apply-map coords.exr small.png -o x.png",
-        "texsyn ERROR: --apply-map coords.exr small.png : the image is 32x32 but the source map "
-        "was made from a 128x128 sample (the image must be aligned with the sample)",
-        { "stucco.png", "coords.exr", "out.exr", "small.png" });
+    ASSERT_EQ(shell("oiiotool small.png --resize 48x48 -o small48.png").status, 0);
+    expect_failure("--apply-map coords.exr small48.png -o x.png",
+        "texsyn ERROR: --apply-map coords.exr small48.png : the image is 48x48 but the source "
+        "map was made from a 128x128 sample (the image must be aligned with the sample: its "
+        "size, or a whole multiple or fraction of it)",
+        { "stucco.png", "coords.exr", "out.exr", "small.png", "small48.png" });
+    expect_failure("--apply-map:normal=sideways coords.exr stucco.png -o x.png",
+        "texsyn ERROR: --apply-map:normal=sideways : expected --apply-map:normal=opengl, "
+        "normal=directx or normal=none",
+        { "stucco.png", "coords.exr", "out.exr", "small.png", "small48.png" });
+    // A map at a quarter of the sample's size is taken, at a quarter of the result's size.
+    CliRun quarter = texsyn("--apply-map coords.exr small.png -o quarter.exr");
+    ASSERT_EQ(quarter.status, 0) << quarter.err;
+    OIIO::ImageBuf q((dir / "quarter.exr").string());
+    ASSERT_TRUE(q.read()) << q.geterror();
+    EXPECT_EQ(q.spec().width * 4, OIIO::ImageBuf((dir / "coords.exr").string()).spec().width);
+    fs::remove(dir / "quarter.exr");
+    write_sample("gray.png", 1, OIIO::TypeUInt8);
+    expect_failure("--apply-map:normal=opengl coords.exr gray.png -o x.png",
+        "texsyn ERROR: --apply-map:normal=opengl coords.exr gray.png : a normal map needs 3 "
+        "channels (x, y, z); the image has 1",
+        { "stucco.png", "coords.exr", "out.exr", "small.png", "small48.png", "gray.png" });
     expect_failure("--apply-map coords.exr stucco.png -o coords.exr",
         "texsyn ERROR: -o coords.exr : refusing to overwrite the input coords.exr",
-        { "stucco.png", "coords.exr", "out.exr", "small.png" });
+        { "stucco.png", "coords.exr", "out.exr", "small.png", "small48.png", "gray.png" });
 }

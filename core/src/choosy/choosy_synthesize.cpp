@@ -108,7 +108,8 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const ChoosyO
     resolved.width = w;
     resolved.height = h;
     if (source_map)
-        detail::write_source_map(*source_map, out.source, w, h, cw, sw, sh);
+        detail::write_source_map(
+            *source_map, out.source, w, h, cw, sw, sh, opt.isotropic ? &out.orientation : nullptr);
     detail::write_synthesis(dst, out.gaussian, in, sample, "choosy", resolved, source_map);
     return true;
 }

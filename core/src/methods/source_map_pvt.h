@@ -16,11 +16,13 @@
 
 namespace texsyn::detail {
 
-/// `map` becomes a width x height 2-channel float image ("x", "y"): pixel i holds the
+/// `map` becomes a width x height float image with the channels "x", "y": pixel i holds the
 /// coordinates of source[i], an index y * source_width + x into the sample, and
-/// "synth:sample_size" = "<sample_width>x<sample_height>" (what apply_source_map checks).
+/// "synth:sample_size" = "<sample_width>x<sample_height>" (what apply_source_map checks);
+/// with `transforms` (per pixel, 0..7: source_map.h's M_t) a third channel "t" holds them.
 void write_source_map(OIIO::ImageBuf& map, const std::vector<uint32_t>& source, int width,
-    int height, int source_width, int sample_width, int sample_height);
+    int height, int source_width, int sample_width, int sample_height,
+    const std::vector<uint8_t>* transforms = nullptr);
 
 /// The options of a method that copies sample pixels (neighbourhood, choosy) with the
 /// source map it writes: map=FILE.exr, a file name, so not one of the method's options.
@@ -34,8 +36,9 @@ struct WithSourceMap {
         return declared_table<WithSourceMap>([](OptionTable<WithSourceMap>& t) {
             t.include(&WithSourceMap::options, Options::table());
             t.file("map", &WithSourceMap::map, FileUse::Write, ".exr",
-                "also write the source map: the 2-channel float OpenEXR of the sample "
-                "coordinate each output pixel was copied from (--apply-map reuses it)");
+                "also write the source map: the float OpenEXR of the sample coordinate each "
+                "output pixel was copied from (x, y; with isotropic=1 also t, the turn it was "
+                "copied under), which --apply-map reuses");
         });
     }
     bool validate(std::string& error) const

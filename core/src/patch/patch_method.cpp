@@ -22,8 +22,9 @@ struct PatchWithFiles {
         return declared_table<O>([](OptionTable<O>& t) {
             t.include(&O::options, PatchOptions::table());
             t.file("map", &O::map, FileUse::Write, ".exr",
-                "also write the source map: the 2-channel float OpenEXR of the sample "
-                "coordinate each output pixel was copied from (--apply-map reuses it)");
+                "also write the source map: the float OpenEXR of the sample coordinate each "
+                "output pixel was copied from (x, y; with isotropic=1 also t, the turn it was "
+                "copied under), which --apply-map reuses");
             t.file("guide", &O::guide, FileUse::ReadData, "",
                 "a one-channel image of the sample's size (read without colour conversion) "
                 "used as its guidance channel instead of the automatic one: patches agree "

@@ -261,10 +261,12 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
     const int p = opt.patch.back();
     const std::vector<uint32_t> picked = detail::nearest_votes(level, field, p, out, opt.nthreads);
     std::vector<uint32_t> chosen(picked.size());
+    std::vector<uint8_t> turns(picked.size());
     for (size_t q = 0; q < picked.size(); ++q) {
         const int x = int(picked[q] % uint32_t(level.pixels.width));
         const int y = int(picked[q] / uint32_t(level.pixels.width));
         chosen[q] = detail::variant_source(x / sw, sw, sh, x % sw, y);
+        turns[q] = uint8_t(x / sw);
     }
     std::vector<Plane> result(size_t(in.nchannels()), Plane(w, h));
     for (size_t c = 0; c < result.size(); ++c)
@@ -282,7 +284,8 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
     resolved.height = h;
     resolved.levels = levels;
     if (source_map)
-        detail::write_source_map(*source_map, chosen, w, h, sw, sw, sh);
+        detail::write_source_map(
+            *source_map, chosen, w, h, sw, sw, sh, opt.isotropic ? &turns : nullptr);
     detail::write_synthesis(dst, std::move(result), in, sample, "patch", resolved, source_map);
     return true;
 }
