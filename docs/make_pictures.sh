@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Regenerates the pictures in docs/images with the tool itself.
-# usage: docs/make_pictures.sh BUILD/oiiotool-ext/texsyn [surfaces|fill]
+# usage: docs/make_pictures.sh BUILD/oiiotool-ext/texsyn [surfaces|fill|materials]
 # (with `surfaces`, only docs/surfaces.md's pictures; they need povray: apt-get install -y povray;
-# with `fill`, only docs/fill.md's)
+# with `fill` or `materials`, only docs/fill.md's or docs/materials.md's)
 set -euo pipefail
 texsyn=$(realpath "$1")
 cd "$(dirname "$0")"
@@ -113,6 +113,31 @@ fill_pictures() {
   done
   rm -rf "$tmp"
 }
+# docs/materials.md: bricks with its height and normal maps (the sample's, at 256x256),
+# then the set synthesized to 384x384 by --patch (seed 1), first as it is, then with
+# isotropic=1 (the normal map turns with the copies); height and normal shown as stored.
+material_pictures() {
+  local tmp
+  tmp=$(mktemp -d)
+  "$texsyn" --seed 1 "$samples/bricks.png" \
+      --material:height="$samples/bricks_height.png":normal="$samples/bricks_normal.png" \
+      --patch:size=384x384 -o "$tmp/set_{map}.png"
+  "$texsyn" --seed 1 "$samples/bricks.png" \
+      --material:height="$samples/bricks_height.png":normal="$samples/bricks_normal.png" \
+      --patch:size=384x384:isotropic=1 -o "$tmp/iso_{map}.png"
+  oiiotool "$samples/bricks.png" "$samples/bricks_height.png" --ch 0,0,0 \
+      "$samples/bricks_normal.png" --mosaic:pad=4 3x1 -d uint8 -o "$out/material_sample.png"
+  for set in set iso; do
+    oiiotool "$tmp/${set}_albedo.png" "$tmp/${set}_height.png" --ch 0,0,0 \
+        "$tmp/${set}_normal.png" --mosaic:pad=4 3x1 -d uint8 -o "$out/material_$set.png"
+  done
+  rm -rf "$tmp"
+}
+if [ "${2:-}" = materials ]; then
+  material_pictures
+  ls -la "$out"/material_*
+  exit 0
+fi
 if [ "${2:-}" = fill ]; then
   fill_pictures
   ls -la "$out"/fill_* "$out"/tileable_*

@@ -90,9 +90,53 @@ namespace {
 // What the check knows of each item the run will put on the stack.
 struct PlannedItem {
     ItemKind kind = ItemKind::Image;
-    std::string name;  ///< its file's name, or its result_name()
-    bool made = false; ///< a command's result
+    std::string name;              ///< its file's name, or its result_name()
+    bool made = false;             ///< a command's result
+    std::vector<std::string> maps; ///< a material set's maps, by name
 };
+
+// Whether `m` copies sample pixels (it can write a source map, map=): the methods that
+// synthesize material sets.
+bool copies_pixels(const Method& m)
+{
+    for (const OptionField& f : m.defaults().table().fields())
+        if (f.name == "map" && f.type == OptionType::OutputFile)
+            return true;
+    return false;
+}
+
+// "--neighborhood, --choosy and --patch": the commands that synthesize material sets.
+std::string material_takers()
+{
+    std::vector<std::string> names;
+    for (const Method* m : methods())
+        if (copies_pixels(*m))
+            names.push_back("--" + m->name);
+    std::string s;
+    for (size_t i = 0; i < names.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return s;
+}
+
+// The maps --material's options make: the albedo, then every map whose file is given (in
+// the option table's order, which is the material's).
+std::vector<std::string> material_maps(const MethodOptions& options)
+{
+    std::vector<std::string> maps = { "albedo" };
+    for (const OptionField& f : options.table().fields())
+        if (f.type == OptionType::InputFile && !options.value(f.name).empty())
+            maps.push_back(f.name);
+    return maps;
+}
+
+// "out_{map}.exr" with `map` in place of {map}.
+std::string map_filename(const std::string& pattern, const std::string& map)
+{
+    std::string name = pattern;
+    for (size_t at = name.find("{map}"); at != std::string::npos; at = name.find("{map}", at))
+        name.replace(at, 5, map);
+    return name;
+}
 
 // "--pyramid, --mix and --transfer": the commands that take analyses.
 std::string analysis_takers()
@@ -111,6 +155,9 @@ std::string analysis_takers()
 void check_inputs(const std::string& name, const Method& m, const std::vector<PlannedItem>& popped)
 {
     for (size_t i = 0; i < popped.size(); ++i) {
+        if (popped[i].kind == ItemKind::Material && (!copies_pixels(m) || popped.size() != 1))
+            throw CliError(name + " : the current item is a material set (from --material); "
+                + material_takers() + " synthesize one");
         if (popped[i].kind == ItemKind::Volume || popped[i].kind == ItemKind::Mesh)
             throw CliError(name + " : the current image is " + item_kind_text(popped[i].kind)
                 + " (from " + (popped[i].kind == ItemKind::Volume ? "--solid" : "--choosy-surface")
@@ -147,7 +194,7 @@ void check_output_kind(const std::string& out, ItemKind kind)
         throw CliError("-o " + out
             + " : the current item is an analysis; write it as *.tsa, or synthesize from it "
               "first (--pyramid)");
-    if (kind == ItemKind::Image && is_analysis_filename(out))
+    if ((kind == ItemKind::Image || kind == ItemKind::Material) && is_analysis_filename(out))
         throw CliError(
             "-o " + out + " : analysis files are made by --analyze (the current item is an image)");
 }
@@ -286,16 +333,25 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             else if (a == "-d")
                 state.data_format = data_format_argument(v);
             else if (a == "-o") {
-                outputs.push_back(v);
                 const PlannedItem item = pop(a, 1)[0]; // -o writes the top item and leaves it
                 check_output_kind(v, item.kind);
+                if (item.kind == ItemKind::Material) { // one file per map
+                    if (v.find("{map}") == std::string::npos)
+                        throw CliError("-o " + v + " : the current item is a material set ("
+                            + OIIO::Strutil::join(item.maps, ", ")
+                            + "); put {map} in the name, e.g. out_{map}.exr");
+                    for (const std::string& map : item.maps)
+                        outputs.push_back(map_filename(v, map));
+                } else {
+                    outputs.push_back(v);
+                }
                 stack.push_back(item);
             } else if (a == "--recipe") {
                 recipes.push_back(v);
                 const PlannedItem item = pop(a, 1)[0];
-                if (item.kind == ItemKind::Analysis)
-                    throw CliError("--recipe " + v
-                        + " : the current item is an analysis; recipes describe images");
+                if (item.kind == ItemKind::Analysis || item.kind == ItemKind::Material)
+                    throw CliError("--recipe " + v + " : the current item is "
+                        + item_kind_text(item.kind) + "; recipes describe images");
                 stack.push_back(item);
             } else if (a == "--iscolorspace" || a == "--tocolorspace") {
                 check_written(i - 1);
@@ -363,7 +419,12 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             std::vector<std::string> names;
             for (const PlannedItem& item : popped)
                 names.push_back(item.name);
-            stack.push_back({ item_kind(m->output), result_name(*m, names), true });
+            const bool material_in = popped.size() == 1 && popped[0].kind == ItemKind::Material;
+            stack.push_back({ material_in ? ItemKind::Material : item_kind(m->output),
+                result_name(*m, names), true,
+                material_in                               ? popped[0].maps
+                    : m->output == MethodOutput::Material ? material_maps(state.options[i])
+                                                          : std::vector<std::string>() });
         } else {
             check_written(i);
             inputs.push_back(a);

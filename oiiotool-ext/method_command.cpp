@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "quiet_stderr.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 
 #include <texsyn/inputs.h>
 #include <texsyn/io.h>
+#include <texsyn/material.h>
 
 namespace texsyn::cli {
 
@@ -133,6 +135,18 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     settings.seed = state.seed;
     settings.nthreads = state.threads;
     settings.subbands = state.subbands && m.subbands;
+    // A material set: the method synthesizes the maps its search weighs, and its source map
+    // then moves every map.
+    const Material* material = inputs.size() == 1 && inputs[0].kind == ItemKind::Material
+        ? inputs[0].material.get()
+        : nullptr;
+    OIIO::ImageBuf search;
+    if (material) {
+        if (!material_search_image(*material, search, error))
+            throw CliError(command + " : " + error);
+        in[0].image = &search;
+        settings.source_map = true;
+    }
     const auto start = std::chrono::steady_clock::now();
     std::shared_ptr<ProgressMeter> meter;
     if (state.progress != ProgressMode::Off && m.output != MethodOutput::Report) {
@@ -161,6 +175,16 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
 
     StackItem item;
     item.kind = item_kind(m.output);
+    if (material) {
+        auto set = std::make_shared<Material>();
+        const auto map = std::find_if(result.files.begin(), result.files.end(),
+            [](const auto& f) { return f.first == "map"; });
+        if (map == result.files.end() || !apply_material(map->second, *material, *set, error))
+            throw CliError(command + " : " + (error.empty() ? "no source map" : error));
+        item.kind = ItemKind::Material;
+        result.image = set->maps[0].image;
+        result.material = std::move(set);
+    }
     std::vector<std::string> names;
     for (const StackItem& input : inputs)
         names.push_back(short_name(input));
@@ -188,6 +212,9 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     }
     item.buf = std::move(result.image);
     item.surface = std::move(result.surface);
+    item.material = std::move(result.material);
+    if (item.material && !item.buf.initialized())
+        item.buf.copy(item.material->maps[0].image);
     item.subbands = std::move(result.subbands);
     if (state.verbose) {
         const double secs = seconds_since(start);
@@ -213,7 +240,8 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     for (const StackItem& input : inputs)
         samples += (samples.empty() ? "" : ",") + short_name(input);
     for (auto& [option, image] : result.files)
-        write_option_file(state, command, option, options.value(option), image, samples);
+        if (!options.value(option).empty()) // (a material's source map is asked for unnamed)
+            write_option_file(state, command, option, options.value(option), image, samples);
     state.stack.push(std::move(item));
 }
 

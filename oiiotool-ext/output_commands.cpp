@@ -144,11 +144,32 @@ void write_mesh_output(CliState& state, const StackItem& item, const std::string
         write_image(state, item, image, udim_filename(filename, udim));
 }
 
+// A material set: one file per map, {map} in the name replaced by the map's name; the
+// albedo written like an image, the other maps as their numbers (Raw).
+void write_material_output(CliState& state, const StackItem& item, const std::string& pattern)
+{
+    for (const MaterialMap& map : item.material->maps) {
+        std::string name = pattern;
+        for (size_t at = name.find("{map}"); at != std::string::npos; at = name.find("{map}", at))
+            name.replace(at, 5, map.name);
+        if (map.kind == MapKind::Colour) {
+            write_image(state, item, map.image, name);
+            continue;
+        }
+        StackItem data;
+        data.input_format = item.input_format;
+        data.input_colorspace = data.output_colorspace = "Raw";
+        write_image(state, data, map.image, name);
+    }
+}
+
 } // namespace
 
 void write_output(CliState& state, const std::string& filename)
 {
     StackItem& item = state.stack.top("-o");
+    if (item.kind == ItemKind::Material)
+        return write_material_output(state, item, filename);
     if (item.kind == ItemKind::Volume)
         return write_volume_output(state, filename);
     if (item.kind == ItemKind::Analysis)

@@ -10,6 +10,7 @@ const char* item_kind_text(ItemKind kind)
     return kind == ItemKind::Analysis ? "an analysis"
         : kind == ItemKind::Volume    ? "a solid texture"
         : kind == ItemKind::Mesh      ? "a textured mesh"
+        : kind == ItemKind::Material  ? "a material set"
                                       : "an image";
 }
 
@@ -28,6 +29,7 @@ ItemKind item_kind(MethodOutput output)
     return output == MethodOutput::Volume  ? ItemKind::Volume
         : output == MethodOutput::Analysis ? ItemKind::Analysis
         : output == MethodOutput::Mesh     ? ItemKind::Mesh
+        : output == MethodOutput::Material ? ItemKind::Material
                                            : ItemKind::Image;
 }
 

@@ -8,6 +8,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <texsyn/material.h>
 #include <texsyn/recipe.h>
 #include <texsyn/stats.h>
 #include <texsyn/subbands.h>
@@ -21,6 +22,7 @@ enum class ItemKind {
     Analysis, ///< a sample's statistics (an analysis file, or made by --analyze)
     Volume,   ///< a 3-D image (a solid texture), scene-linear, colour un-associated
     Mesh,     ///< a textured mesh (SurfaceTexture); `buf` its UV bake's first tile, if any
+    Material, ///< a material set (texsyn/material.h); `buf` its albedo
 };
 
 /// One item on the stack.
@@ -29,6 +31,7 @@ struct StackItem {
     OIIO::ImageBuf buf; ///< an image or a volume
     std::shared_ptr<const TextureStatistics> analysis;
     std::shared_ptr<const SurfaceTexture> surface;
+    std::shared_ptr<const Material> material;
     std::vector<NamedImage> subbands; ///< filled when --subbands is on
 
     /// What to call it: the file name as given, or e.g. "pyramid synthesis of rust.png".
@@ -49,7 +52,7 @@ struct StackItem {
     std::string no_recipe;
 };
 
-/// "an image", "an analysis", "a solid texture" or "a textured mesh".
+/// "an image", "an analysis", "a solid texture", "a textured mesh" or "a material set".
 const char* item_kind_text(ItemKind kind);
 
 /// What the result of `method` on inputs called `inputs` (file names without folders, or

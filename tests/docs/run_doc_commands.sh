@@ -19,6 +19,7 @@ cp "$repo/data/samples/stucco_yellow.png" stucco.png
 cp "$repo/data/samples/grass.png" grass.png
 cp "$repo/data/samples/bricks.png" bricks.png
 cp "$repo/data/masks/bricks_hole.png" bricks_hole.png
+cp "$repo/data/samples/bricks_height.png" "$repo/data/samples/bricks_normal.png" .
 cp "$repo/data/samples/flowers.png" flowers.png
 cp "$repo/data/samples/wood_grain.png" wood_grain.png
 cp "$repo/data/samples/tiles_green.png" tiles.png

@@ -35,6 +35,7 @@
 namespace texsyn {
 
 struct SurfaceTexture; // texsyn/surface.h
+struct Material;       // texsyn/material.h
 
 /// A method's options, whatever the method: its options struct together with that struct's
 /// option table. Value semantics (copies are deep).
@@ -154,6 +155,8 @@ enum class MethodOutput {
     /// a triangle mesh with a colour per face (SurfaceTexture), and, if the mesh has UVs,
     /// their bake as the image (the first UDIM tile's; every tile in the SurfaceTexture)
     Mesh,
+    /// a material set (material.h): an albedo and its other maps, for a copying method
+    Material,
 };
 
 /// One input of a run: an image (scene-linear float) or an analysis.
@@ -170,6 +173,9 @@ struct RunSettings {
     /// Called with the fraction done (0..1) from the calling thread; may be empty.
     std::function<void(float)> progress;
     bool subbands = false; ///< fill MethodResult::subbands (methods that have them)
+    /// Methods that copy sample pixels give their source map in MethodResult::files
+    /// ("map") even when map= names no file (a material set needs it).
+    bool source_map = false;
 };
 
 /// What a run gives (MethodOutput says which member).
@@ -179,6 +185,7 @@ struct MethodResult {
     std::shared_ptr<TextureStatistics> analysis;   ///< Analysis
     std::string report;                            ///< Report
     std::shared_ptr<const SurfaceTexture> surface; ///< Mesh
+    std::shared_ptr<const Material> material;      ///< Material
     std::vector<NamedImage> subbands;              ///< with RunSettings::subbands
     /// The images of the output-file options that name a file, by option name (e.g.
     /// "map", the source map), for the front end to write.

@@ -22,6 +22,7 @@ const Method& surface_method();
 const Method& patch_method();
 const Method& fill_method();
 const Method& tileable_method();
+const Method& material_method();
 const Method& cascade_method();
 const Method& analyze_method();
 const Method& check_method();
@@ -40,6 +41,7 @@ const std::vector<const Method*>& methods()
         &detail::patch_method(),
         &detail::fill_method(),
         &detail::tileable_method(),
+        &detail::material_method(),
         &detail::cascade_method(),
         &detail::analyze_method(),
         &detail::check_method(),

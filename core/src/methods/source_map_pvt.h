@@ -49,7 +49,7 @@ struct WithSourceMap {
 
 /// The run of a registry row for a method that copies sample pixels: `synthesize` (e.g.
 /// choosy_synthesize) from the one image input, with the source map when map= names a
-/// file (MethodResult::files["map"]).
+/// file or RunSettings::source_map asks for it (MethodResult::files["map"]).
 template <class Options>
 bool run_copying_method(const MethodOptions& options, const std::vector<MethodInput>& inputs,
     const RunSettings& settings, MethodResult& result, std::string& error,
@@ -59,11 +59,12 @@ bool run_copying_method(const MethodOptions& options, const std::vector<MethodIn
     Options opt = given.options;
     apply_run_settings(settings, opt);
     OIIO::ImageBuf map;
-    if (!synthesize(result.image, *inputs[0].image, opt, given.map.empty() ? nullptr : &map)) {
+    const bool want_map = !given.map.empty() || settings.source_map;
+    if (!synthesize(result.image, *inputs[0].image, opt, want_map ? &map : nullptr)) {
         error = result.image.geterror();
         return false;
     }
-    if (!given.map.empty())
+    if (want_map)
         result.files.emplace_back("map", std::move(map));
     return true;
 }

@@ -60,14 +60,15 @@ bool run_patch(const MethodOptions& options, const std::vector<MethodInput>& inp
     const auto guide = files.find("guide");
     OIIO::ImageBuf map;
     PatchReport report;
-    if (!patch_synthesize(result.image, *inputs[0].image, opt, given.map.empty() ? nullptr : &map,
+    const bool want_map = !given.map.empty() || settings.source_map;
+    if (!patch_synthesize(result.image, *inputs[0].image, opt, want_map ? &map : nullptr,
             guide == files.end() ? nullptr : &guide->second, &report)) {
         error = result.image.geterror();
         if (guide != files.end() && error.find("guide") != std::string::npos)
             error = option_error("guide", given.guide, error);
         return false;
     }
-    if (!given.map.empty())
+    if (want_map)
         result.files.emplace_back("map", std::move(map));
     result.notes = report_text(report);
     return true;
