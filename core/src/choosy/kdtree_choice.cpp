@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <mutex>
 
 #include <OpenImageIO/parallel.h>
 
@@ -51,6 +52,7 @@ class KdTreeChoice final : public ChoiceIndex {
 public:
     KdTreeChoice(const AnalysisPoints& points, float penalty, int dims, float eps, int nthreads)
         : ChoiceIndex(points.orientations)
+        , m_points(points)
         , m_pca(fit_pca(points, dims))
         , m_count(points.count)
         , m_eps(eps)
@@ -111,6 +113,20 @@ public:
             }
         }
         return best_point;
+    }
+
+    uint32_t choose_masked(
+        const float* query, const float* mask, const uint32_t* hints, size_t nhints) const override
+    {
+        // Serial: it runs inside a pass's parallel loop (no nested parallel loops).
+        std::call_once(m_full_once, [this] {
+            const size_t dim = size_t(m_points.dim);
+            m_full.resize(m_count * dim);
+            for (size_t p = 0; p < m_count; ++p)
+                m_points.vector(p, m_full.data() + p * dim);
+        });
+        return choose_masked_exhaustively(m_full.data(), m_count, m_points.dim, m_orientations,
+            m_counts, query, mask, hints, nhints);
     }
 
     void record(uint32_t point) override
@@ -195,6 +211,7 @@ private:
             m_orientations };
     }
 
+    AnalysisPoints m_points;
     PcaProjection m_pca;
     size_t m_count;
     float m_eps;
@@ -205,6 +222,8 @@ private:
     std::vector<uint32_t> m_pending;  // sites chosen this round, in order
     std::vector<DynamicKdTree> m_trees;
     int m_nthreads;
+    mutable std::once_flag m_full_once;
+    mutable std::vector<float> m_full; // count x dim, for choose_masked
 };
 
 } // namespace
