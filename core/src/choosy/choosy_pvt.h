@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -100,22 +101,35 @@ protected:
     uint32_t m_orientations;
 };
 
-/// Every point in full dimension (the points are copied in): the exact O(N d) loop.
+/// Every point in full dimension (the points are copied in): the exact O(N d) loop;
+/// choose_masked() is MaskedChoice's (points.vector must stay valid as long as the index).
 std::unique_ptr<ChoiceIndex> make_exhaustive_choice(
     const AnalysisPoints& points, float penalty, int nthreads);
 
-/// The exact loop of make_exhaustive_choice's choose_masked over `count` points of `dim`
-/// floats at `vectors` (point p at p * dim), scored with `counts` (site p / orientations).
-uint32_t choose_masked_exhaustively(const float* vectors, size_t count, int dim,
-    uint32_t orientations, const UseCounts& counts, const float* query, const float* mask,
-    const uint32_t* hints, size_t nhints);
+/// The exact loop behind both indices' choose_masked: every point in full dimension,
+/// copied in from points.vector (which must stay valid as long as this) at the first
+/// choose(), in blocks of kBlock components (the first block of every point, then the
+/// second, ...), so that the first block, which rules most points out, is read in one
+/// cache line per point. Thread safety: choose() may run concurrently.
+class MaskedChoice {
+public:
+    static constexpr int kBlock = 16;
+    explicit MaskedChoice(const AnalysisPoints& points);
+    /// ChoiceIndex::choose_masked scored with `counts` (point p: site p / orientations).
+    uint32_t choose(const UseCounts& counts, const float* query, const float* mask,
+        const uint32_t* hints, size_t nhints) const;
+
+private:
+    AnalysisPoints m_points;
+    mutable std::once_flag m_once;
+    mutable std::vector<float> m_blocks; // [block][point][kBlock], zero-padded
+};
 
 /// §6.2–6.4: points weighted, projected on their `dims` leading principal components (all
 /// if dims >= dim), held in a set of dynamic kd-trees, one per use count; a tree's nearest
 /// is scaled by its penalty and the smallest wins. `eps` is nanoflann's approximation.
-/// choose_masked() is the exact loop over the full-dimensional points, copied in from
-/// points.vector (which must stay valid as long as the index) at its first call: a
-/// distance that skips components has no principal components to search by.
+/// choose_masked() is MaskedChoice's exact loop (points.vector must stay valid as long as
+/// the index): a distance that skips components has no principal components to search by.
 std::unique_ptr<ChoiceIndex> make_kdtree_choice(
     const AnalysisPoints& points, float penalty, int dims, float eps, int nthreads);
 

@@ -44,30 +44,15 @@ uint32_t least_score_point(size_t count, uint32_t orientations, const UseCounts&
     return best_point;
 }
 
-// Sum over i of (mask[i] (a[i] - b[i]))^2 if it is < bound, else a value >= bound: the
-// lanes of distance2_below, checked every 16 components.
-float masked_distance2_below(
-    const float* a, const float* b, const float* mask, int dim, float bound)
+// Sum over the kBlock components of one block of (mask[i] (a[i] - b[i]))^2, added to the
+// lanes.
+inline void accumulate_masked(const float* a, const float* b, const float* mask, float* acc)
 {
-    float acc[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
-    constexpr int block = 16;
-    int i = 0;
-    for (; i + 8 <= dim; i += 8) {
+    for (int i = 0; i < MaskedChoice::kBlock; i += 8)
         for (int l = 0; l < 8; ++l) {
             const float d = (a[i + l] - b[i + l]) * mask[i + l];
             acc[l] += d * d;
         }
-        if ((i + 8) % block == 0) {
-            const float partial = sum_lanes(acc);
-            if (partial >= bound)
-                return partial;
-        }
-    }
-    for (int l = 0; i + l < dim; ++l) {
-        const float d = (a[i + l] - b[i + l]) * mask[i + l];
-        acc[l] += d * d;
-    }
-    return sum_lanes(acc);
 }
 
 class ExhaustiveChoice final : public ChoiceIndex {
@@ -78,6 +63,7 @@ public:
         , m_count(points.count)
         , m_vectors(points.count * size_t(points.dim))
         , m_counts(points.sites(), penalty)
+        , m_masked(points)
     {
         const size_t blocks = (m_count + kFillBlock - 1) / kFillBlock;
         OIIO::parallel_for(
@@ -101,8 +87,7 @@ public:
     uint32_t choose_masked(
         const float* query, const float* mask, const uint32_t* hints, size_t nhints) const override
     {
-        return choose_masked_exhaustively(
-            m_vectors.data(), m_count, m_dim, m_orientations, m_counts, query, mask, hints, nhints);
+        return m_masked.choose(m_counts, query, mask, hints, nhints);
     }
 
     void record(uint32_t point) override { m_counts.add(point / m_orientations); }
@@ -114,17 +99,49 @@ private:
     size_t m_count;
     std::vector<float> m_vectors;
     UseCounts m_counts;
+    MaskedChoice m_masked;
 };
 
 } // namespace
 
-uint32_t choose_masked_exhaustively(const float* vectors, size_t count, int dim,
-    uint32_t orientations, const UseCounts& counts, const float* query, const float* mask,
-    const uint32_t* hints, size_t nhints)
+MaskedChoice::MaskedChoice(const AnalysisPoints& points)
+    : m_points(points)
+{ }
+
+uint32_t MaskedChoice::choose(const UseCounts& counts, const float* query, const float* mask,
+    const uint32_t* hints, size_t nhints) const
 {
+    const size_t count = m_points.count, dim = size_t(m_points.dim);
+    const size_t blocks = (dim + kBlock - 1) / kBlock, stride = count * size_t(kBlock);
+    // Serial: it runs inside a pass's parallel loop (no nested parallel loops).
+    std::call_once(m_once, [&] {
+        m_blocks.assign(blocks * stride, 0.0f);
+        std::vector<float> v(dim);
+        for (size_t p = 0; p < count; ++p) {
+            m_points.vector(p, v.data());
+            for (size_t i = 0; i < dim; ++i)
+                m_blocks[i / kBlock * stride + p * kBlock + i % kBlock] = v[i];
+        }
+    });
+    thread_local std::vector<float> q, m;
+    q.assign(blocks * kBlock, 0.0f);
+    m.assign(blocks * kBlock, 0.0f);
+    std::copy(query, query + dim, q.begin());
+    std::copy(mask, mask + dim, m.begin());
+    const float* data = m_blocks.data();
+    // Checked after every block: exact, as distance2_below.
     return least_score_point(
-        count, orientations, counts, hints, nhints, [&](size_t p, float bound) {
-            return masked_distance2_below(query, vectors + p * size_t(dim), mask, dim, bound);
+        count, uint32_t(m_points.orientations), counts, hints, nhints, [&](size_t p, float bound) {
+            float acc[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+            float partial = 0.0f;
+            for (size_t b = 0; b < blocks; ++b) {
+                accumulate_masked(q.data() + b * kBlock, data + b * stride + p * kBlock,
+                    m.data() + b * kBlock, acc);
+                partial = sum_lanes(acc);
+                if (partial >= bound)
+                    break;
+            }
+            return partial;
         });
 }
 

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <mutex>
 
 #include <OpenImageIO/parallel.h>
 
@@ -52,7 +51,6 @@ class KdTreeChoice final : public ChoiceIndex {
 public:
     KdTreeChoice(const AnalysisPoints& points, float penalty, int dims, float eps, int nthreads)
         : ChoiceIndex(points.orientations)
-        , m_points(points)
         , m_pca(fit_pca(points, dims))
         , m_count(points.count)
         , m_eps(eps)
@@ -61,6 +59,7 @@ public:
         , m_home(points.sites(), 0)
         , m_pending_flag(points.sites(), 0)
         , m_nthreads(nthreads)
+        , m_masked(points)
     {
         const size_t rd = size_t(m_pca.output_dim());
         const size_t blocks = (m_count + kProjectBlock - 1) / kProjectBlock;
@@ -118,15 +117,7 @@ public:
     uint32_t choose_masked(
         const float* query, const float* mask, const uint32_t* hints, size_t nhints) const override
     {
-        // Serial: it runs inside a pass's parallel loop (no nested parallel loops).
-        std::call_once(m_full_once, [this] {
-            const size_t dim = size_t(m_points.dim);
-            m_full.resize(m_count * dim);
-            for (size_t p = 0; p < m_count; ++p)
-                m_points.vector(p, m_full.data() + p * dim);
-        });
-        return choose_masked_exhaustively(m_full.data(), m_count, m_points.dim, m_orientations,
-            m_counts, query, mask, hints, nhints);
+        return m_masked.choose(m_counts, query, mask, hints, nhints);
     }
 
     void record(uint32_t point) override
@@ -211,7 +202,6 @@ private:
             m_orientations };
     }
 
-    AnalysisPoints m_points;
     PcaProjection m_pca;
     size_t m_count;
     float m_eps;
@@ -222,8 +212,7 @@ private:
     std::vector<uint32_t> m_pending;  // sites chosen this round, in order
     std::vector<DynamicKdTree> m_trees;
     int m_nthreads;
-    mutable std::once_flag m_full_once;
-    mutable std::vector<float> m_full; // count x dim, for choose_masked
+    MaskedChoice m_masked;
 };
 
 } // namespace
