@@ -230,6 +230,36 @@ TEST(ChoosyKdTrees, NearlyAgreeWithTwentyDimensions)
     }
 }
 
+// Wildcards (§3.12): choose_masked with every component counting is choose, and the
+// kd-trees' masked choice (an exact loop over the full vectors) is the exhaustive index's,
+// with half the slots masked, through count changes, for the paper's penalty and greedy.
+TEST(ChoosyMasked, ExactOnBothIndices)
+{
+    const ChoiceCase k = choice_case(400);
+    const size_t dim = size_t(k.points.dim);
+    std::vector<float> all(dim, 1.0f), half(dim);
+    for (size_t i = 0; i < dim; ++i)
+        half[i] = (i / 3) % 2 == 0 ? 1.0f : 0.0f; // every other slot of 3 channels
+    for (float penalty : { 1.0f, 0.0f }) {
+        auto exact = detail::make_exhaustive_choice(k.points, penalty, 0);
+        auto trees = detail::make_kdtree_choice(k.points, penalty, 20, ChoosyOptions().eps, 0);
+        for (size_t q = 0; q < k.nqueries; ++q) {
+            const float* v = k.queries.data() + q * dim;
+            const uint32_t e = exact->choose(v, nullptr, 0);
+            ASSERT_EQ(exact->choose_masked(v, all.data(), nullptr, 0), e) << q;
+            const uint32_t m = exact->choose_masked(v, half.data(), nullptr, 0);
+            ASSERT_EQ(trees->choose_masked(v, half.data(), nullptr, 0), m) << q;
+            exact->record(m);
+            trees->record(m);
+            if (q % 16 == 15) {
+                exact->settle();
+                trees->settle();
+            }
+        }
+        EXPECT_GE(exact->counts().max(), 1u);
+    }
+}
+
 // Every output pixel is a copy of a sample pixel, the source map says which, and the
 // output tiles.
 TEST(Choosy, EveryPixelIsASamplePixelAndTheOutputTiles)

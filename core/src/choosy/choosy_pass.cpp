@@ -29,6 +29,18 @@ std::vector<size_t> visiting_order(size_t n, uint64_t seed, uint64_t stream)
     return order;
 }
 
+// The choice for `site` as the target stands: index.choose(), or choose_masked() where the
+// site's neighbourhood has wildcards. `q` and `mask` hold dim floats, `hints` max_neighbors().
+uint32_t choose_for(const ChoosyTarget& target, const ChoiceIndex& index, size_t site, float* q,
+    float* mask, uint32_t* hints)
+{
+    target.query(site, q);
+    const size_t nhints = target.hints(site, hints);
+    if (target.wildcards(site, mask))
+        return index.choose_masked(q, mask, hints, nhints);
+    return index.choose(q, hints, nhints);
+}
+
 } // namespace
 
 size_t choosy_round_size(size_t sites)
@@ -43,7 +55,7 @@ void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& s
     const size_t dim = size_t(target.dim());
     const size_t round = choosy_round_size(n);
     const std::vector<size_t> order = visiting_order(n, settings.seed, settings.stream);
-    std::vector<float> queries(round * dim);
+    std::vector<float> queries(round * dim), masks(round * dim);
     std::vector<uint32_t> choices(round);
     std::vector<uint32_t> hints(round * target.max_neighbors());
     // The round in which each output site was last written and each sample site chosen.
@@ -58,10 +70,9 @@ void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& s
             int64_t(0), int64_t(m),
             [&](int64_t i) {
                 const size_t site = order[start + size_t(i)];
-                float* q = queries.data() + size_t(i) * dim;
-                uint32_t* h = hints.data() + size_t(i) * target.max_neighbors();
-                target.query(site, q);
-                choices[size_t(i)] = index.choose(q, h, target.hints(site, h));
+                choices[size_t(i)] = choose_for(target, index, site,
+                    queries.data() + size_t(i) * dim, masks.data() + size_t(i) * dim,
+                    hints.data() + size_t(i) * target.max_neighbors());
             },
             OIIO::paropt(settings.nthreads).minitems(1));
         for (size_t i = 0; i < m; ++i) {
@@ -72,12 +83,9 @@ void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& s
             const size_t k = stale ? 0 : target.neighbors(site, neighbors.data());
             for (size_t j = 0; j < k && !stale; ++j)
                 stale = site_round[neighbors[j]] == r;
-            if (stale) {
-                float* q = queries.data() + i * dim;
-                uint32_t* h = hints.data() + i * target.max_neighbors();
-                target.query(site, q);
-                choices[i] = index.choose(q, h, target.hints(site, h));
-            }
+            if (stale)
+                choices[i] = choose_for(target, index, site, queries.data() + i * dim,
+                    masks.data() + i * dim, hints.data() + i * target.max_neighbors());
             target.apply(site, choices[i]);
             index.record(choices[i]);
             site_round[site] = r;

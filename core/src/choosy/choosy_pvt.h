@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,11 @@ public:
     /// first, so that their best score bounds the search. They never change the answer of
     /// an exact search.
     virtual uint32_t choose(const float* query, const uint32_t* hints, size_t nhints) const = 0;
+    /// choose() with wildcards: the squared distance sums only the components whose `mask`
+    /// (dim floats, each 0 or 1) is 1, over the points' full-dimensional vectors, exactly
+    /// (Castellanos & Williams §3.12: a wildcard's difference is zero to every point).
+    virtual uint32_t choose_masked(
+        const float* query, const float* mask, const uint32_t* hints, size_t nhints) const = 0;
     /// One more use of the site of point `point`.
     virtual void record(uint32_t point) = 0;
     /// Every use count back to 0 (a new pass).
@@ -95,13 +101,35 @@ protected:
     uint32_t m_orientations;
 };
 
-/// Every point in full dimension (the points are copied in): the exact O(N d) loop.
+/// Every point in full dimension (the points are copied in): the exact O(N d) loop;
+/// choose_masked() is MaskedChoice's (points.vector must stay valid as long as the index).
 std::unique_ptr<ChoiceIndex> make_exhaustive_choice(
     const AnalysisPoints& points, float penalty, int nthreads);
+
+/// The exact loop behind both indices' choose_masked: every point in full dimension,
+/// copied in from points.vector (which must stay valid as long as this) at the first
+/// choose(), in blocks of kBlock components (the first block of every point, then the
+/// second, ...), so that the first block, which rules most points out, is read in one
+/// cache line per point. Thread safety: choose() may run concurrently.
+class MaskedChoice {
+public:
+    static constexpr int kBlock = 16;
+    explicit MaskedChoice(const AnalysisPoints& points);
+    /// ChoiceIndex::choose_masked scored with `counts` (point p: site p / orientations).
+    uint32_t choose(const UseCounts& counts, const float* query, const float* mask,
+        const uint32_t* hints, size_t nhints) const;
+
+private:
+    AnalysisPoints m_points;
+    mutable std::once_flag m_once;
+    mutable std::vector<float> m_blocks; // [block][point][kBlock], zero-padded
+};
 
 /// §6.2–6.4: points weighted, projected on their `dims` leading principal components (all
 /// if dims >= dim), held in a set of dynamic kd-trees, one per use count; a tree's nearest
 /// is scaled by its penalty and the smallest wins. `eps` is nanoflann's approximation.
+/// choose_masked() is MaskedChoice's exact loop (points.vector must stay valid as long as
+/// the index): a distance that skips components has no principal components to search by.
 std::unique_ptr<ChoiceIndex> make_kdtree_choice(
     const AnalysisPoints& points, float penalty, int dims, float eps, int nthreads);
 
@@ -130,6 +158,11 @@ public:
     /// coherence: each neighbour's point shifted back by its offset, in its orientation),
     /// at most max_neighbors(), into `out`; returns how many. Safe to call concurrently.
     virtual size_t hints(size_t site, uint32_t* out) const = 0;
+    /// Wildcards (§3.12): whether some components of query(site) are to be left out of the
+    /// distance; if so, writes `mask` (dim floats: 1 for a component that counts, 0 for a
+    /// wildcard) for ChoiceIndex::choose_masked. False (mask untouched) by default. Safe to
+    /// call concurrently.
+    virtual bool wildcards(size_t, float*) const { return false; }
     /// `site` takes the value of `point` (and its children).
     virtual void apply(size_t site, uint32_t point) = 0;
 };
@@ -147,7 +180,8 @@ struct PassSettings {
 /// it. Visits run in rounds (choosy_round_size) searched in parallel against the state at
 /// the round's start and applied in order; a visit that an earlier visit of its round
 /// affected (a neighbour changed, or the same sample site was chosen) is searched again at
-/// its turn. The result depends on the seed, never on nthreads.
+/// its turn. A site with wildcards (ChoosyTarget::wildcards) is searched with
+/// index.choose_masked(). The result depends on the seed, never on nthreads.
 void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& settings);
 
 /// Progress over the passes of a synthesis: visits done of `total`.

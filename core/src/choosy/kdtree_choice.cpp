@@ -59,6 +59,7 @@ public:
         , m_home(points.sites(), 0)
         , m_pending_flag(points.sites(), 0)
         , m_nthreads(nthreads)
+        , m_masked(points)
     {
         const size_t rd = size_t(m_pca.output_dim());
         const size_t blocks = (m_count + kProjectBlock - 1) / kProjectBlock;
@@ -111,6 +112,12 @@ public:
             }
         }
         return best_point;
+    }
+
+    uint32_t choose_masked(
+        const float* query, const float* mask, const uint32_t* hints, size_t nhints) const override
+    {
+        return m_masked.choose(m_counts, query, mask, hints, nhints);
     }
 
     void record(uint32_t point) override
@@ -205,6 +212,7 @@ private:
     std::vector<uint32_t> m_pending;  // sites chosen this round, in order
     std::vector<DynamicKdTree> m_trees;
     int m_nthreads;
+    MaskedChoice m_masked;
 };
 
 } // namespace

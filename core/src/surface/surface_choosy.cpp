@@ -99,6 +99,35 @@ AnalysisPoints surface_points(
 
 namespace {
 
+// The faces whose empty slots count as beyond the boundary: those with a boundary vertex
+// among the corners of the face or of a face in its stencil. Elsewhere an empty slot is an
+// irregular vertex, where the surface closes up. Empty on a closed mesh.
+std::vector<uint8_t> wildcard_sites(const FaceLevel& level, const FaceStencils& stencils)
+{
+    std::vector<uint8_t> on_boundary(level.vertices.size(), 0);
+    bool any = false;
+    for (size_t f = 0; f < level.size(); ++f)
+        for (uint32_t e = 0; e < 3; ++e)
+            if (level.across[f][e] == kNoFace) {
+                on_boundary[level.faces[f][e]] = on_boundary[level.faces[f][(e + 1) % 3]] = 1;
+                any = true;
+            }
+    if (!any)
+        return {};
+    const auto touches = [&](uint32_t f) {
+        const auto& v = level.faces[f];
+        return on_boundary[v[0]] || on_boundary[v[1]] || on_boundary[v[2]];
+    };
+    std::vector<uint8_t> wild(level.size(), 0);
+    for (uint32_t f = 0; f < uint32_t(level.size()); ++f) {
+        bool near = touches(f);
+        for (uint32_t g : stencils[f])
+            near = near || (g != kNoFace && touches(g));
+        wild[f] = uint8_t(near && !complete(stencils[f]));
+    }
+    return wild;
+}
+
 class SurfaceTarget final : public ChoosyTarget {
 public:
     SurfaceTarget(SurfaceLevel& out, const SurfaceAnalysis& analysis, int level,
@@ -107,6 +136,7 @@ public:
         , m_analysis(analysis)
         , m_level(size_t(level))
         , m_weights(weights)
+        , m_wild(wildcard_sites(*out.geometry, *out.stencils))
     { }
 
     size_t sites() const override { return m_out.geometry->size(); }
@@ -135,6 +165,18 @@ public:
 
     size_t hints(size_t, uint32_t*) const override { return 0; }
 
+    bool wildcards(size_t site, float* mask) const override
+    {
+        if (m_wild.empty() || !m_wild[site])
+            return false;
+        const auto& slots = (*m_out.stencils)[site];
+        const size_t nc = m_out.gaussian.size();
+        for (size_t s = 0; s < size_t(kStencilSlots); ++s)
+            for (size_t c = 0; c < nc; ++c)
+                mask[s * nc + c] = slots[s] == kNoFace ? 0.0f : 1.0f;
+        return true;
+    }
+
     void apply(size_t site, uint32_t point) override
     {
         const uint32_t a = m_analysis.sites[m_level][point / 3];
@@ -162,6 +204,7 @@ private:
     const SurfaceAnalysis& m_analysis;
     size_t m_level;
     std::array<float, kStencilSlots> m_weights;
+    std::vector<uint8_t> m_wild; // per site: 1 if its empty slots are wildcards
 };
 
 } // namespace
