@@ -280,3 +280,17 @@ TEST_F(SurfaceCli, UnevenMeshesAreRemeshedUnlessTold)
         std::string::npos)
         << r.err;
 }
+
+// boundary=: the mushroom (one boundary loop) grows differently with wildcards than with the
+// face's own value (the default). (A closed mesh grows the same either way:
+// SurfaceBoundary.ClosedMeshUnchanged.)
+TEST_F(SurfaceCli, BoundarySlotsChangeAMeshWithABoundary)
+{
+    fs::copy_file(mesh_path("mushroom.obj"), dir / "mushroom.obj");
+    for (const char* boundary : { "own", "wildcards" }) {
+        CliRun r = texsyn(std::string("--seed 2 flowers.png --choosy-surface:mesh=mushroom.obj:")
+            + "levels=2:boundary=" + boundary + " -o " + boundary + ".ply");
+        ASSERT_EQ(r.status, 0) << r.err;
+    }
+    EXPECT_NE(slurp(dir / "own.ply"), slurp(dir / "wildcards.ply"));
+}

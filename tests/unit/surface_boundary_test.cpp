@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// §3.12's wildcards: stencil slots past a mesh boundary do not count in a match. The choice
-// for a face next to the boundary does not depend on what its empty slots hold; a closed
-// mesh is synthesized exactly as before wildcards; and the band along the mushroom's
-// boundary is measured against the interior.
+// §3.12's wildcards (boundary=wildcards): stencil slots past a mesh boundary do not count in
+// a match. The choice for a face next to the boundary does not depend on what its empty
+// slots hold; a closed mesh is synthesized exactly as before wildcards; and the band along
+// the mushroom's boundary is measured against the interior, with wildcards and with the
+// default (the face's own value).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -60,7 +61,8 @@ std::vector<Plane> pebbles(int side)
 }
 
 SurfaceSynthesis grow(const FaceLevel& base, const std::vector<Plane>& sample, int levels,
-    uint64_t seed, int nthreads, ChoosySearch search = ChoosySearch::KdTree)
+    uint64_t seed, int nthreads, ChoosySearch search = ChoosySearch::KdTree,
+    BoundarySlots boundary = BoundarySlots::Wildcards)
 {
     ChoosyOptions opt;
     opt.levels = levels;
@@ -69,7 +71,7 @@ SurfaceSynthesis grow(const FaceLevel& base, const std::vector<Plane>& sample, i
     opt.search = search;
     SurfaceSynthesis out;
     std::string error;
-    EXPECT_TRUE(synthesize_on_surface(sample, base, opt, out, error)) << error;
+    EXPECT_TRUE(synthesize_on_surface(sample, base, opt, out, error, boundary)) << error;
     return out;
 }
 
@@ -161,7 +163,7 @@ struct OneLevel {
         kdtree = make_choice_index(points, opt);
         opt.search = ChoosySearch::Exhaustive;
         exhaustive = make_choice_index(points, opt);
-        target = make_surface_target(level, analysis, 0, weights);
+        target = make_surface_target(level, analysis, 0, weights, true);
     }
 };
 
@@ -262,31 +264,37 @@ TEST(SurfaceBoundary, SameSeedSameColoursAtAnyThreadCount)
 
 // The finest faces within two rings of the boundary against the rest, per channel: their
 // means and standard deviations apart, in units of the interior's standard deviation,
-// averaged over seeds 1 to 3 (pebbles 32x32, 2 levels, 18000 finest faces). Measured
-// (R, G, B): mean +0.18, +0.19, +0.20; sd +0.12, +0.14, +0.16: the band is lighter and more
-// varied than the interior (docs/surfaces.md says why). The bounds are tripwires a little
-// above what is measured.
+// averaged over seeds 1 to 3 (pebbles 32x32, 2 levels, 18000 finest faces), with the
+// face's own value in slots past the boundary (the default) and with wildcards. Measured
+// (R, G, B): own, mean +0.26, +0.26, +0.25, sd +0.04, +0.03, +0.04; wildcards, mean +0.18,
+// +0.19, +0.20, sd +0.12, +0.14, +0.16. In this small setup neither is better on both
+// counts; at 3 levels from a 96x96 sample (docs/surfaces.md) own is, which is why it is the
+// default. The bounds are tripwires a little above what is measured.
 TEST(SurfaceBoundary, BandAlongTheBoundary)
 {
     const std::vector<Plane> sample = pebbles(32);
     const int seeds = 3;
-    std::vector<double> mean_gap(3, 0.0), sd_gap(3, 0.0);
-    for (int seed = 1; seed <= seeds; ++seed) {
-        const SurfaceSynthesis out = grow(mushroom(), sample, 2, uint64_t(seed), 2);
-        const std::vector<uint8_t> near = near_boundary(out.pyramid.levels.back());
-        ASSERT_GT(std::count(near.begin(), near.end(), uint8_t(1)), 0);
-        ASSERT_EQ(out.colours.size(), 3u);
-        for (size_t c = 0; c < 3; ++c) {
-            const Moments b = moments(out.colours[c], near, 1);
-            const Moments i = moments(out.colours[c], near, 0);
-            mean_gap[c] += (b.mean - i.mean) / i.sd / seeds;
-            sd_gap[c] += (b.sd - i.sd) / i.sd / seeds;
+    for (BoundarySlots boundary : { BoundarySlots::Own, BoundarySlots::Wildcards }) {
+        std::vector<double> mean_gap(3, 0.0), sd_gap(3, 0.0);
+        for (int seed = 1; seed <= seeds; ++seed) {
+            const SurfaceSynthesis out
+                = grow(mushroom(), sample, 2, uint64_t(seed), 2, ChoosySearch::KdTree, boundary);
+            const std::vector<uint8_t> near = near_boundary(out.pyramid.levels.back());
+            ASSERT_GT(std::count(near.begin(), near.end(), uint8_t(1)), 0);
+            ASSERT_EQ(out.colours.size(), 3u);
+            for (size_t c = 0; c < 3; ++c) {
+                const Moments b = moments(out.colours[c], near, 1);
+                const Moments i = moments(out.colours[c], near, 0);
+                mean_gap[c] += (b.mean - i.mean) / i.sd / seeds;
+                sd_gap[c] += (b.sd - i.sd) / i.sd / seeds;
+            }
         }
-    }
-    for (size_t c = 0; c < 3; ++c) {
-        std::printf(
-            "channel %zu: mean gap %+.3f, sd gap %+.3f interior sd\n", c, mean_gap[c], sd_gap[c]);
-        EXPECT_LT(std::abs(mean_gap[c]), 0.25) << c;
-        EXPECT_LT(std::abs(sd_gap[c]), 0.2) << c;
+        const bool own = boundary == BoundarySlots::Own;
+        for (size_t c = 0; c < 3; ++c) {
+            std::printf("%s, channel %zu: mean gap %+.3f, sd gap %+.3f interior sd\n",
+                own ? "own" : "wildcards", c, mean_gap[c], sd_gap[c]);
+            EXPECT_LT(std::abs(mean_gap[c]), own ? 0.3 : 0.25) << c;
+            EXPECT_LT(std::abs(sd_gap[c]), own ? 0.1 : 0.2) << c;
+        }
     }
 }

@@ -41,6 +41,15 @@ struct FaceShapes {
 /// sampling's options (levels, iterations, penalty, search, dims, eps; not size or
 /// isotropic: a surface has no size, and no global orientation, so the sample is always
 /// matched in six rotations, §3.8).
+/// What a face's stencil slots past a mesh boundary hold in a match (§3.12).
+enum class BoundarySlots {
+    /// The face's own value: measured closest to the interior (docs/surfaces.md), and fast.
+    Own,
+    /// Wildcards, as the paper has them: they count for nothing, and the faces near a
+    /// boundary get an exact search of the full neighbourhoods without those slots.
+    Wildcards,
+};
+
 struct SurfaceOptions {
     ChoosyOptions options;
     std::string mesh; ///< the OBJ or PLY file to grow the texture on
@@ -52,6 +61,7 @@ struct SurfaceOptions {
     /// The UV bake's size (each UDIM tile), if the mesh has UVs; 0x0 = no bake.
     int bake_width = 1024;
     int bake_height = 1024;
+    BoundarySlots boundary = BoundarySlots::Own;
 
     static const OptionTable<SurfaceOptions>& table();
     /// Ranges, list lengths and the rules between options. False with a message.

@@ -194,7 +194,8 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     base.faces = grown.faces;
     detail::finish_level(base);
     detail::SurfaceSynthesis synthesis;
-    if (!detail::synthesize_on_surface(in.channels, std::move(base), opt, synthesis, error))
+    if (!detail::synthesize_on_surface(
+            in.channels, std::move(base), opt, synthesis, error, options.boundary))
         return false;
 
     const detail::FaceLevel& level = synthesis.pyramid.levels.back();

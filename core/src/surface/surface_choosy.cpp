@@ -131,12 +131,12 @@ std::vector<uint8_t> wildcard_sites(const FaceLevel& level, const FaceStencils& 
 class SurfaceTarget final : public ChoosyTarget {
 public:
     SurfaceTarget(SurfaceLevel& out, const SurfaceAnalysis& analysis, int level,
-        const std::array<float, kStencilSlots>& weights)
+        const std::array<float, kStencilSlots>& weights, bool wildcards)
         : m_out(out)
         , m_analysis(analysis)
         , m_level(size_t(level))
         , m_weights(weights)
-        , m_wild(wildcard_sites(*out.geometry, *out.stencils))
+        , m_wild(wildcards ? wildcard_sites(*out.geometry, *out.stencils) : std::vector<uint8_t>())
     { }
 
     size_t sites() const override { return m_out.geometry->size(); }
@@ -210,9 +210,10 @@ private:
 } // namespace
 
 std::unique_ptr<ChoosyTarget> make_surface_target(SurfaceLevel& out,
-    const SurfaceAnalysis& analysis, int level, const std::array<float, kStencilSlots>& weights)
+    const SurfaceAnalysis& analysis, int level, const std::array<float, kStencilSlots>& weights,
+    bool wildcards)
 {
-    return std::make_unique<SurfaceTarget>(out, analysis, level, weights);
+    return std::make_unique<SurfaceTarget>(out, analysis, level, weights, wildcards);
 }
 
 } // namespace texsyn::detail

@@ -51,12 +51,14 @@ struct SurfaceLevel {
     std::vector<uint32_t> source; ///< the analysis site each face copied
 };
 
-/// `out` as a ChoosyTarget over `analysis` at `level`. A slot with no face past a boundary
-/// is a wildcard (§3.12): its difference to every point is zero (ChoosyTarget::wildcards).
-/// Its slots count as past a boundary when a corner of the face, or of a face of its
-/// stencil, is on a boundary. An empty slot elsewhere is an irregular vertex, where the
-/// surface closes up: it takes the face's own value, so a closed mesh has no wildcards.
+/// `out` as a ChoosyTarget over `analysis` at `level`. A slot with no face takes the face's
+/// own value; with `wildcards`, one past a boundary is a wildcard instead (§3.12): its
+/// difference to every point is zero (ChoosyTarget::wildcards). Its slots count as past a
+/// boundary when a corner of the face, or of a face of its stencil, is on a boundary. An
+/// empty slot elsewhere is an irregular vertex, where the surface closes up: it always
+/// takes the face's own value, so a closed mesh has no wildcards.
 std::unique_ptr<ChoosyTarget> make_surface_target(SurfaceLevel& out,
-    const SurfaceAnalysis& analysis, int level, const std::array<float, kStencilSlots>& weights);
+    const SurfaceAnalysis& analysis, int level, const std::array<float, kStencilSlots>& weights,
+    bool wildcards);
 
 } // namespace texsyn::detail

@@ -44,6 +44,11 @@ const OptionTable<SurfaceOptions>& SurfaceOptions::table()
         t.size("bake", &O::bake_width, &O::bake_height, 32768, "no bake",
             "if the mesh has UVs: the size WxH of its UV texture (each UDIM tile), written by "
             "an image -o");
+        t.choice("boundary", &O::boundary,
+            { { "own", BoundarySlots::Own }, { "wildcards", BoundarySlots::Wildcards } },
+            "on a mesh with a boundary, what neighbourhood slots past it hold in a match: own "
+            "(the face's own value; closest to the interior, measured) or wildcards (they "
+            "count for nothing, as in the paper; slower)");
     });
 }
 

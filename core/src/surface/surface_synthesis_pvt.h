@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <texsyn/choosy.h>
+#include <texsyn/surface.h>
 
 #include "face_filter_pvt.h"
 
@@ -24,7 +25,9 @@ struct SurfaceSynthesis {
 /// orientation, so the sample is seen in six rotations, §3.8). The sample is cropped to a
 /// multiple of 2^(levels-1) on each side. Fails (false, `error` naming the option) when
 /// the sample is too small for `levels`. Bit-identical for a seed whatever nthreads is.
+/// `boundary`: what slots past a mesh boundary hold (make_surface_target).
 bool synthesize_on_surface(const std::vector<Plane>& sample, FaceLevel base,
-    const ChoosyOptions& opt, SurfaceSynthesis& out, std::string& error);
+    const ChoosyOptions& opt, SurfaceSynthesis& out, std::string& error,
+    BoundarySlots boundary = BoundarySlots::Own);
 
 } // namespace texsyn::detail

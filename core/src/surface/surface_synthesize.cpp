@@ -14,7 +14,7 @@
 namespace texsyn::detail {
 
 bool synthesize_on_surface(const std::vector<Plane>& sample, FaceLevel base,
-    const ChoosyOptions& opt, SurfaceSynthesis& out, std::string& error)
+    const ChoosyOptions& opt, SurfaceSynthesis& out, std::string& error, BoundarySlots boundary)
 {
     const int levels = opt.levels;
     const int unit = 1 << (levels - 1);
@@ -85,7 +85,8 @@ bool synthesize_on_surface(const std::vector<Plane>& sample, FaceLevel base,
                 = stencil_weights(analysis_edges[size_t(k)], analysis_kernels[size_t(k)].sigma);
             const AnalysisPoints points = surface_points(analysis, k, weights);
             auto index = make_choice_index(points, opt);
-            auto target = make_surface_target(level, analysis, k, weights);
+            auto target = make_surface_target(
+                level, analysis, k, weights, boundary == BoundarySlots::Wildcards);
             choosy_passes(*target, *index, opt, opt.iterations_at(levels - 1 - k),
                 0x53530000 + uint64_t(k) * 256, progress);
         }
