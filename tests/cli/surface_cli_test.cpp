@@ -151,7 +151,7 @@ TEST_F(SurfaceCli, BadSettingsAreRefusedBeforeTheWork)
         in);
     expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:isotropic=1 -o out.ply",
         "texsyn ERROR: --choosy-surface : isotropic=1 : unknown option (known: mesh, levels, "
-        "iterations, penalty, search, dims, eps, remesh, bake)",
+        "iterations, penalty, search, dims, eps, remesh, bake, boundary)",
         in);
     // 51M faces at the finest level: refused from the counts alone, before remeshing.
     expect_failure("bricks.png --choosy-surface:mesh=sphere.obj:levels=6:remesh=50000 -o out.ply",
