@@ -13,6 +13,7 @@
 
 #include <texsyn/error_text.h>
 #include <texsyn/io.h>
+#include <texsyn/material.h>
 #include <texsyn/memory.h>
 
 #include "cli_error.h"
@@ -95,22 +96,12 @@ struct PlannedItem {
     std::vector<std::string> maps; ///< a material set's maps, by name
 };
 
-// Whether `m` copies sample pixels (it can write a source map, map=): the methods that
-// synthesize material sets.
-bool copies_pixels(const Method& m)
-{
-    for (const OptionField& f : m.defaults().table().fields())
-        if (f.name == "map" && f.type == OptionType::OutputFile)
-            return true;
-    return false;
-}
-
 // "--neighborhood, --choosy and --patch": the commands that synthesize material sets.
 std::string material_takers()
 {
     std::vector<std::string> names;
     for (const Method* m : methods())
-        if (copies_pixels(*m))
+        if (synthesizes_materials(*m))
             names.push_back("--" + m->name);
     std::string s;
     for (size_t i = 0; i < names.size(); ++i)
@@ -155,7 +146,8 @@ std::string analysis_takers()
 void check_inputs(const std::string& name, const Method& m, const std::vector<PlannedItem>& popped)
 {
     for (size_t i = 0; i < popped.size(); ++i) {
-        if (popped[i].kind == ItemKind::Material && (!copies_pixels(m) || popped.size() != 1))
+        if (popped[i].kind == ItemKind::Material
+            && (!synthesizes_materials(m) || popped.size() != 1))
             throw CliError(name + " : the current item is a material set (from --material); "
                 + material_takers() + " synthesize one");
         if (popped[i].kind == ItemKind::Volume || popped[i].kind == ItemKind::Mesh)

@@ -140,13 +140,6 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     const Material* material = inputs.size() == 1 && inputs[0].kind == ItemKind::Material
         ? inputs[0].material.get()
         : nullptr;
-    OIIO::ImageBuf search;
-    if (material) {
-        if (!material_search_image(*material, search, error))
-            throw CliError(command + " : " + error);
-        in[0].image = &search;
-        settings.source_map = true;
-    }
     const auto start = std::chrono::steady_clock::now();
     std::shared_ptr<ProgressMeter> meter;
     if (state.progress != ProgressMode::Off && m.output != MethodOutput::Report) {
@@ -157,7 +150,9 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     }
 
     MethodResult result;
-    ok = run_method(m, options, in, files, settings, result, error);
+    ok = material
+        ? run_material_method(m, options, *material, in[0].name, files, settings, result, error)
+        : run_method(m, options, in, files, settings, result, error);
     if (meter)
         print_progress(meter->finish(ok, seconds_since(start)));
     if (!ok) {
@@ -175,16 +170,8 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
 
     StackItem item;
     item.kind = item_kind(m.output);
-    if (material) {
-        auto set = std::make_shared<Material>();
-        const auto map = std::find_if(result.files.begin(), result.files.end(),
-            [](const auto& f) { return f.first == "map"; });
-        if (map == result.files.end() || !apply_material(map->second, *material, *set, error))
-            throw CliError(command + " : " + (error.empty() ? "no source map" : error));
+    if (material)
         item.kind = ItemKind::Material;
-        result.image = set->maps[0].image;
-        result.material = std::move(set);
-    }
     std::vector<std::string> names;
     for (const StackItem& input : inputs)
         names.push_back(short_name(input));

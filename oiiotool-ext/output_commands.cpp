@@ -82,33 +82,6 @@ void write_image(CliState& state, const StackItem& item, const OIIO::ImageBuf& i
         throw CliError("-o " + filename + " : " + state.outputs.final_names(without_file(error)));
 }
 
-// The 8-bit sRGB colours mesh viewers show for `texture`'s faces: its first three channels
-// (one channel: grey) encoded like an untagged 8-bit image.
-std::vector<std::array<uint8_t, 3>> display_colours(CliState& state, const SurfaceTexture& texture)
-{
-    const ColorConfig& cc = state.colors();
-    const size_t nfaces = texture.faces.size();
-    PlanarImage rgb;
-    for (size_t c = 0; c < 3; ++c) {
-        const std::vector<float>& from = texture.colours[std::min(c, texture.colours.size() - 1)];
-        Plane p(int(nfaces), 1);
-        std::copy(from.begin(), from.end(), p.data());
-        rgb.channels.push_back(std::move(p));
-    }
-    rgb.channel_names = { "R", "G", "B" };
-    const std::string srgb = cc.guess_colorspace(OIIO::ImageSpec(1, 1, 3, OIIO::TypeUInt8)).space;
-    std::string error;
-    if (!cc.convert(rgb, cc.scene_linear(), srgb, error, state.threads))
-        throw CliError("display colours: " + error);
-    std::vector<std::array<uint8_t, 3>> out(nfaces);
-    for (size_t f = 0; f < nfaces; ++f)
-        for (size_t c = 0; c < 3; ++c) {
-            const float v = std::clamp(rgb.channels[c].data()[f], 0.0f, 1.0f);
-            out[f][c] = uint8_t(std::lround(v * 255.0f));
-        }
-    return out;
-}
-
 // "torus_<UDIM>.exr" with the tile's number; `filename` as it is if it has no <UDIM>.
 std::string udim_filename(const std::string& filename, int udim)
 {
@@ -124,7 +97,9 @@ void write_mesh_output(CliState& state, const StackItem& item, const std::string
     const SurfaceTexture& texture = *item.surface;
     std::string error;
     if (OIIO::Strutil::iends_with(filename, ".ply")) {
-        const std::vector<std::array<uint8_t, 3>> rgb = display_colours(state, texture);
+        std::vector<std::array<uint8_t, 3>> rgb;
+        if (!surface_display_rgb(texture, state.colors(), rgb, error, state.threads))
+            throw CliError("-o " + filename + " : display colours: " + error);
         if (!write_surface_ply(state.outputs.add(filename), texture, &rgb, error))
             throw CliError(
                 "-o " + filename + " : " + state.outputs.final_names(without_file(error)));

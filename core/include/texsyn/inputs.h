@@ -47,6 +47,15 @@ constexpr int sample_read_copies = 4;
 bool read_sample(const std::string& filename, const ColorConfig& colors,
     const std::string& colorspace, Sample& sample, std::string& error, int nthreads = 0);
 
+/// Makes a sample of an image already in memory (a Python array or ImageBuf) as
+/// read_sample() makes one of a file: `pixels` (any pixel type, the values as stored;
+/// colour associated with alpha unless flagged "oiio:UnassociatedAlpha") converted from
+/// `colorspace` ("" = ColorConfig::guess_colorspace of its spec) to scene_linear; `name`
+/// names it in messages. The sample's file_pixels share `pixels`' storage if it is float.
+/// Fails (false, `error` naming it) on NaN/Inf pixels or an unknown colour space.
+bool sample_from_image(OIIO::ImageBuf pixels, const std::string& name, const ColorConfig& colors,
+    const std::string& colorspace, Sample& sample, std::string& error, int nthreads = 0);
+
 /// Converts an image sample's file values again, now taken to be in `colorspace`.
 /// Fails (false, `error`) for an unknown space or an analysis.
 bool relinearize_sample(Sample& sample, const ColorConfig& colors, const std::string& colorspace,

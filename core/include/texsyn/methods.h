@@ -170,7 +170,9 @@ struct MethodInput {
 struct RunSettings {
     uint64_t seed = 0;
     int nthreads = 0; ///< 0 = OIIO's default
-    /// Called with the fraction done (0..1) from the calling thread; may be empty.
+    /// Called with the fraction done (0..1) from the calling thread, outside parallel
+    /// loops; may be empty. It may throw to stop the run (a front end's cancellation):
+    /// run_method() then returns false with the exception's message and a partial result.
     std::function<void(float)> progress;
     bool subbands = false; ///< fill MethodResult::subbands (methods that have them)
     /// Methods that copy sample pixels give their source map in MethodResult::files

@@ -97,9 +97,10 @@ std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir);
 /// with synth:* metadata (synth:sample, synth:colorspace too); with `subbands` not null
 /// and recipe.subbands set, the subbands are returned as well. Fails (false, `error`,
 /// prefixed by the sample's file name where the sample is at fault) if
-/// Recipe::validate() does or the synthesis does.
+/// Recipe::validate() does or the synthesis does. `control` gives the run's threads and
+/// progress (RunSettings::nthreads, ::progress; its other members are the recipe's).
 bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImage>* subbands,
-    std::string& error);
+    std::string& error, const RunSettings& control = {});
 
 /// What run_recipe() will give, without running it: the spec of its result (size, depth,
 /// channels, float, and the synth:* metadata, synth:options as the recipe gives them,

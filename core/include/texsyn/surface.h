@@ -19,6 +19,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/choosy.h>
+#include <texsyn/color.h>
 #include <texsyn/options.h>
 
 namespace texsyn {
@@ -93,6 +94,12 @@ struct SurfaceTexture {
 /// whatever options.nthreads is.
 bool synthesize_surface(SurfaceTexture& out, const OIIO::ImageBuf& sample,
     const SurfaceOptions& options, std::string& error);
+
+/// The 8-bit sRGB colours mesh viewers show for `texture`'s faces (write_surface_ply's
+/// `display_rgb`): its first three channels (one channel: grey) converted from `colors`'
+/// scene_linear like an untagged 8-bit image. False with OCIO's message otherwise.
+bool surface_display_rgb(const SurfaceTexture& texture, const ColorConfig& colors,
+    std::vector<std::array<uint8_t, 3>>& rgb, std::string& error, int nthreads = 0);
 
 /// Writes `texture`'s mesh as a binary PLY (per-face float colours in scene-linear, named
 /// after its channels, plus 8-bit red/green/blue from `display_rgb`, one per face, for

@@ -28,6 +28,8 @@
 
 namespace texsyn {
 
+class ColorConfig; // texsyn/color.h
+
 /// One float channel of a 3-D block. Value semantics; cheap to move.
 class Volume {
 public:
@@ -111,6 +113,12 @@ void imagebuf_from_volume(const PlanarVolume& v, OIIO::ImageBuf& dst);
 /// synth:* metadata and wrapmodes into `v.attributes`. Fails (false, `error`) if `src` has an
 /// error, is empty, too large (height * depth >= 2^31) or has NaN/Inf voxels.
 bool volume_from_imagebuf(const OIIO::ImageBuf& src, PlanarVolume& dst, std::string& error);
+
+/// A 3-D ImageBuf (as imagebuf_from_volume() makes one) with its colour converted from
+/// space `from` to `to` by `colors` (ColorConfig::convert: alpha and other channels
+/// untouched), kept un-associated as volumes keep it. False with a message, `dst` unchanged.
+bool convert_volume_colours(const ColorConfig& colors, const OIIO::ImageBuf& volume,
+    const std::string& from, const std::string& to, OIIO::ImageBuf& dst, std::string& error);
 
 /// Z slice `z` of a 3-D ImageBuf as a 2-D float image of the same width, height,
 /// channels and metadata, colour associated with alpha (the slice EXR's parts; the OIIO

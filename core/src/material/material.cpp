@@ -2,7 +2,9 @@
 // A material's search image and its maps re-applied by a source map.
 #include <texsyn/material.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <texsyn/image.h>
 
@@ -91,6 +93,39 @@ bool apply_material(
         }
         out.maps.push_back(std::move(applied));
     }
+    return true;
+}
+
+bool synthesizes_materials(const Method& method)
+{
+    for (const OptionField& f : method.defaults().table().fields())
+        if (f.name == "map" && f.type == OptionType::OutputFile)
+            return true;
+    return false;
+}
+
+bool run_material_method(const Method& method, const MethodOptions& options,
+    const Material& material, const std::string& name, const OptionImages& files,
+    RunSettings settings, MethodResult& result, std::string& error)
+{
+    OIIO::ImageBuf search;
+    if (!material_search_image(material, search, error))
+        return false;
+    settings.source_map = true;
+    if (!run_method(
+            method, options, { { &search, nullptr, name } }, files, settings, result, error))
+        return false;
+    const auto map = std::find_if(
+        result.files.begin(), result.files.end(), [](const auto& f) { return f.first == "map"; });
+    if (map == result.files.end()) {
+        error = method.name + " gave no source map";
+        return false;
+    }
+    auto set = std::make_shared<Material>();
+    if (!apply_material(map->second, material, *set, error))
+        return false;
+    result.image = set->maps[0].image;
+    result.material = std::move(set);
     return true;
 }
 

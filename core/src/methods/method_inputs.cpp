@@ -39,9 +39,11 @@ bool read_sample(const std::string& filename, const ColorConfig& colors,
     // Held at once: the file's pixels, their scene-linear copy, and the colour
     // conversion's two working copies.
     OIIO::ImageSpec native;
-    if (!read_image(filename, s.file_pixels, error, &native, sample_read_copies))
+    OIIO::ImageBuf pixels;
+    if (!read_image(filename, pixels, error, &native, sample_read_copies))
         return false;
-    s.file_format = native.format;
+    // The pixels are float now: what the file says of them (its type, its colour tags)
+    // is in its native spec.
     ColorConfig::Guess guess { colorspace, "as asked (--iscolorspace)", "" };
     if (colorspace.empty()) {
         guess = colors.guess_colorspace(native);
@@ -50,6 +52,36 @@ bool read_sample(const std::string& filename, const ColorConfig& colors,
                 + "); name it with --iscolorspace";
             return false;
         }
+    }
+    if (!sample_from_image(std::move(pixels), filename, colors, guess.space, s, error, nthreads))
+        return false;
+    s.file_format = native.format;
+    s.colorspace_reason = guess.reason;
+    s.colorspace_warning = guess.warning;
+    sample = std::move(s);
+    return true;
+}
+
+bool sample_from_image(OIIO::ImageBuf pixels, const std::string& name, const ColorConfig& colors,
+    const std::string& colorspace, Sample& sample, std::string& error, int nthreads)
+{
+    Sample s;
+    s.filename = name;
+    s.file_format = pixels.spec().format;
+    ColorConfig::Guess guess { colorspace, "as asked (--iscolorspace)", "" };
+    if (colorspace.empty()) {
+        guess = colors.guess_colorspace(pixels.spec());
+        if (guess.space.empty()) {
+            error = name + ": unknown colour space (" + guess.reason
+                + "); name it with --iscolorspace";
+            return false;
+        }
+    }
+    if (pixels.spec().format == OIIO::TypeFloat)
+        s.file_pixels = std::move(pixels);
+    else if (!s.file_pixels.copy(pixels, OIIO::TypeFloat)) {
+        error = name + ": " + s.file_pixels.geterror();
+        return false;
     }
     if (!relinearize_sample(s, colors, guess.space, error, nthreads))
         return false;

@@ -38,16 +38,7 @@ bool convert_result(const ColorConfig& colors, const OIIO::ImageBuf& image, cons
 {
     if (!volume)
         return colors.convert_image(image, colors.scene_linear(), to, true, dst, error);
-    PlanarVolume v;
-    if (!volume_from_imagebuf(image, v, error))
-        return false;
-    PlanarImage planes;
-    swap_voxel_planes(v, planes);
-    const bool ok = colors.convert(planes, colors.scene_linear(), to, error);
-    swap_voxel_planes(v, planes);
-    if (ok)
-        imagebuf_from_volume(v, dst);
-    return ok;
+    return convert_volume_colours(colors, image, colors.scene_linear(), to, dst, error);
 }
 
 // What run_recipe() and recipe_spec() both start from: the nesting
@@ -96,7 +87,7 @@ bool prepare(const Recipe& recipe, Prepared& p, std::string& error)
 } // namespace
 
 bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImage>* subbands,
-    std::string& error)
+    std::string& error, const RunSettings& control)
 {
     Prepared p;
     if (!prepare(recipe, p, error))
@@ -106,15 +97,18 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
     std::vector<Sample> samples(recipe.samples.size());
     std::vector<MethodInput> inputs;
     for (size_t i = 0; i < samples.size(); ++i) {
-        if (!read_sample(recipe.samples[i], *p.colors, p.spaces[i], samples[i], error))
+        if (!read_sample(
+                recipe.samples[i], *p.colors, p.spaces[i], samples[i], error, control.nthreads))
             return false;
         inputs.push_back({ samples[i].analysis ? nullptr : &samples[i].pixels,
             samples[i].analysis.get(), recipe.samples[i] });
     }
     OptionImages files;
-    if (!read_option_files(options, *p.colors, files, error))
+    if (!read_option_files(options, *p.colors, files, error, control.nthreads))
         return false;
     RunSettings settings;
+    settings.nthreads = control.nthreads;
+    settings.progress = control.progress;
     settings.seed = recipe.seed;
     settings.subbands = recipe.subbands && subbands;
     MethodResult result;

@@ -8,6 +8,8 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/strutil.h>
 
+#include <texsyn/color.h>
+
 namespace texsyn {
 
 void imagebuf_from_volume(const PlanarVolume& v, OIIO::ImageBuf& dst)
@@ -110,6 +112,21 @@ OIIO::ImageBuf volume_slice(const OIIO::ImageBuf& volume, int z)
     slice.specmod().erase_attribute("oiio:UnassociatedAlpha");
     slice.set_pixels(slice.roi(), OIIO::TypeFloat, px.data());
     return slice;
+}
+
+bool convert_volume_colours(const ColorConfig& colors, const OIIO::ImageBuf& volume,
+    const std::string& from, const std::string& to, OIIO::ImageBuf& dst, std::string& error)
+{
+    PlanarVolume v;
+    if (!volume_from_imagebuf(volume, v, error))
+        return false;
+    PlanarImage planes;
+    swap_voxel_planes(v, planes);
+    const bool ok = colors.convert(planes, from, to, error);
+    swap_voxel_planes(v, planes);
+    if (ok)
+        imagebuf_from_volume(v, dst);
+    return ok;
 }
 
 } // namespace texsyn

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "py_recipe.h"
+
+#include <pybind11/stl.h>
+
+#include <texsyn/recipe.h>
+
+#include "py_errors.h"
+#include "py_images.h"
+#include "py_run.h"
+
+namespace py = pybind11;
+
+namespace texsyn::python {
+
+namespace {
+
+std::string current_dir()
+{
+    return py::str(py::module_::import("os").attr("getcwd")()).cast<std::string>();
+}
+
+Recipe load_recipe(const std::string& name)
+{
+    Recipe recipe;
+    std::string error;
+    bool ok;
+    {
+        py::gil_scoped_release release;
+        ok = recipe_from_filename(name, recipe, error);
+    }
+    if (!ok)
+        raise_error(ErrorKind::Value, error);
+    return recipe;
+}
+
+Recipe recipe_from_json(const std::string& text, py::object base_dir)
+{
+    Recipe recipe;
+    std::string error;
+    const std::string base
+        = base_dir.is_none() ? current_dir() : py::str(base_dir).cast<std::string>();
+    if (!parse_recipe(text, base, recipe, error) || !recipe.validate(error))
+        raise_error(ErrorKind::Value, error);
+    return recipe;
+}
+
+py::object run(const Recipe& recipe, int threads, py::object progress)
+{
+    RunControl control(progress);
+    RunSettings settings;
+    settings.nthreads = threads;
+    settings.progress = control.progress();
+    OIIO::ImageBuf image;
+    std::string error;
+    bool ok;
+    {
+        py::gil_scoped_release release;
+        ok = run_recipe(recipe, image, nullptr, error, settings);
+    }
+    control.raise_if_stopped();
+    if (!ok)
+        raise_error(ErrorKind::Runtime, error);
+    return to_python(std::move(image), OutputForm {});
+}
+
+} // namespace
+
+void register_recipe(py::module_& m)
+{
+    py::class_<Recipe>(m, "Recipe",
+        "A synthesis recipe (docs/recipes.md): a method, its samples, options, seed and colour\n"
+        "spaces. The same recipe gives the same pixels here, in `texsyn` and through the OIIO\n"
+        "plugin (oiiotool, maketx, OpenImageIO.ImageBuf).")
+        .def_static("load", &load_recipe, py::arg("name"),
+            "Reads a recipe: a .texsyn JSON file, or a name as the OIIO plugin takes it\n"
+            "(\"rust.png.texsyn?size=512x512&seed=7\"). Raises ValueError for a bad recipe.")
+        .def_static("from_json", &recipe_from_json, py::arg("text"),
+            py::arg("base_dir") = py::none(),
+            "A recipe from JSON text; relative paths are resolved against base_dir (default:\n"
+            "the current folder).")
+        .def(
+            "to_json",
+            [](const Recipe& r, py::object base_dir) {
+                const std::string base
+                    = base_dir.is_none() ? current_dir() : py::str(base_dir).cast<std::string>();
+                try {
+                    return recipe_to_json(r, base);
+                } catch (const std::exception& e) {
+                    raise_error(ErrorKind::Value, e.what());
+                }
+            },
+            py::arg("base_dir") = py::none(),
+            "The recipe as JSON with every option written out; paths relative to base_dir\n"
+            "(default: the current folder).")
+        .def("run", &run, py::kw_only(), py::arg("threads") = 0, py::arg("progress") = py::none(),
+            "Synthesizes the recipe: a float32 array (H x W x C; a volume D x H x W x C) in its\n"
+            "tocolorspace (scene-linear by default), colour associated with alpha - the pixels\n"
+            "`texsyn ... -d float -o out.exr` writes. Same seed, same pixels at any threads=.")
+        .def_property_readonly("method", [](const Recipe& r) { return r.method; })
+        .def_property_readonly("samples", [](const Recipe& r) { return r.samples; })
+        .def_property_readonly("seed", [](const Recipe& r) { return r.seed; })
+        .def_property_readonly("tocolorspace", [](const Recipe& r) { return r.tocolorspace; })
+        .def_property_readonly(
+            "options",
+            [](const Recipe& r) {
+                const MethodOptions options = r.options ? r.options : r.row()->defaults();
+                py::dict d;
+                for (const OptionField& f : options.table().fields())
+                    d[f.name.c_str()] = options.value(f.name);
+                return d;
+            },
+            "The method's options as text, by name.")
+        .def("__repr__", [](const Recipe& r) {
+            std::string samples;
+            for (const std::string& s : r.samples)
+                samples += (samples.empty() ? " of " : ", ") + s;
+            return "<texsyn.Recipe " + r.method + samples + ", seed " + std::to_string(r.seed)
+                + ">";
+        });
+}
+
+} // namespace texsyn::python

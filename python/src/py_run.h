@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+// Library work run from Python: without the GIL, with progress reported to a Python
+// callable, and stopped by Ctrl-C.
+#pragma once
+
+#include <functional>
+#include <memory>
+
+#include <pybind11/pybind11.h>
+
+namespace texsyn::python {
+
+/// One run's link to Python. Construct with the GIL held; call progress() from the thread
+/// that made it, without the GIL (RunSettings::progress).
+class RunControl {
+public:
+    /// `callback`: None, or a callable taking the fraction done (0..1).
+    explicit RunControl(pybind11::object callback);
+    ~RunControl();
+    RunControl(const RunControl&) = delete;
+    RunControl& operator=(const RunControl&) = delete;
+
+    /// The RunSettings::progress of the run: takes the GIL, runs Python's signal handlers
+    /// (Ctrl-C raises KeyboardInterrupt there) and the callback; if either raises, keeps
+    /// that exception and throws to stop the run.
+    std::function<void(float)> progress();
+
+    /// With the GIL held, after a run: re-raises the Python exception that stopped it, if
+    /// one did (else returns).
+    void raise_if_stopped();
+
+private:
+    pybind11::object m_callback;
+    std::unique_ptr<pybind11::error_already_set> m_stopped;
+};
+
+} // namespace texsyn::python
