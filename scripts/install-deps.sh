@@ -18,6 +18,8 @@ packages=(
   libcgal-dev                               # optional GPL remeshing backend (-DTEXSYN_WITH_CGAL=ON)
   libopenvdb-dev libboost-iostreams-dev      # solid textures: .vdb output (OpenVDB's CMake module needs Boost.Iostreams)
   python3-openimageio                       # tests open recipes from Python
+  pybind11-dev python3-dev python3-numpy    # the texsyn Python module (python/)
+  python3-pytest                            # its tests
   python3-jsonschema                        # tests validate recipes with docs/recipe.schema.json
   libgtest-dev libbenchmark-dev
   clang-format                              # the style check (tests: clang_format)

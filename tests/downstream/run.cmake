@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # ctest driver: installs the built texsyn into a scratch prefix, then configures, builds
 # and runs tests/downstream against that prefix only.
-# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR.
+# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR; PYTHON_SITEDIR (where the Python package is
+# installed in the prefix, if it is built).
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix
                 RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -39,4 +40,14 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E env OCIO= OIIO_LIBRARY_PATH=${WORK_D
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 if(rc OR NOT out MATCHES "32 x   32, 3 channel, float texsyn")
   message(FATAL_ERROR "the installed plugin does not open a recipe: ${rc} ${out}")
+endif()
+# The installed Python package, imported from the prefix only (docs/python.md).
+if(PYTHON_SITEDIR)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env OCIO= PYTHONPATH=${WORK_DIR}/prefix/${PYTHON_SITEDIR}
+                          /usr/bin/python3 -c
+                          "import texsyn; assert texsyn.__file__.startswith('${WORK_DIR}/prefix/'), texsyn.__file__; a = texsyn.cascade(size=(16, 16)); print(a.shape, a.dtype)"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc OR NOT out MATCHES "\\(16, 16, 1\\) float32")
+    message(FATAL_ERROR "the installed Python package does not work: ${rc} ${out} ${err}")
+  endif()
 endif()
