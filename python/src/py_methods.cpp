@@ -275,6 +275,7 @@ std::shared_ptr<const PyMaterial> material_of_dict(const Call& call, py::dict ma
             CallInput in;
             in.image = image_arg(value, "albedo");
             in.name = input_name(*in.image, "albedo");
+            in.colorspace = call.inputs.empty() ? "" : call.inputs[0].colorspace;
             m.inputs.push_back(std::move(in));
             continue;
         }
@@ -295,6 +296,20 @@ std::shared_ptr<const PyMaterial> material_of_dict(const Call& call, py::dict ma
     return std::make_shared<PyMaterial>(run_call(m).cast<PyMaterial>());
 }
 
+// Keyword `k`'s integer `value` in [lo, hi]; ValueError otherwise.
+int64_t int_keyword(const std::string& k, py::handle value, int64_t lo, int64_t hi)
+{
+    if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value)) {
+        const long long v = PyLong_AsLongLong(value.ptr());
+        if (!PyErr_Occurred() && v >= lo && v <= hi)
+            return v;
+        PyErr_Clear();
+    }
+    raise_error(ErrorKind::Value,
+        k + "=" + py::repr(value).cast<std::string>() + " : expected an integer in "
+            + std::to_string(lo) + ".." + std::to_string(hi));
+}
+
 // Reads the keywords of a call to `method`.
 void read_keywords(Call& call, py::dict kwargs)
 {
@@ -307,9 +322,9 @@ void read_keywords(Call& call, py::dict kwargs)
     for (auto [key, value] : kwargs) {
         const std::string k = py::str(key).cast<std::string>();
         if (k == "seed")
-            call.seed = value.cast<uint64_t>();
+            call.seed = uint64_t(int_keyword(k, value, 0, 2147483647)); // as --seed takes it
         else if (k == "threads")
-            call.threads = value.cast<int>();
+            call.threads = int(int_keyword(k, value, 0, 4096));
         else if (k == "progress")
             call.progress = py::reinterpret_borrow<py::object>(value);
         else if (k == "colorconfig")
