@@ -15,6 +15,7 @@
 #include <texsyn/material.h>
 #include <texsyn/methods.h>
 #include <texsyn/source_map.h>
+#include <texsyn/subbands.h>
 
 #include "py_colours.h"
 #include "py_errors.h"
@@ -211,6 +212,7 @@ py::list method_table()
         row["example"] = m->example;
         row["doc"] = m->doc;
         row["materials"] = synthesizes_materials(*m);
+        row["subbands"] = m->subbands;
         py::list options;
         for (const OptionField& f : defaults.table().fields())
             options.append(describe_option(f, defaults.value(f.name)));
@@ -251,9 +253,24 @@ struct Call {
     int threads = 0;
     py::object progress = py::none();
     std::string tocolorspace;
+    bool subbands = false; ///< give the pyramid's subbands too (rows that have them)
 };
 
 py::object run_call(Call& call);
+
+// `image`'s planes as a float32 array H x W x C.
+py::array_t<float> planar_array(const PlanarImage& image)
+{
+    const int w = image.width(), h = image.height(), nc = image.nchannels();
+    py::array_t<float> a({ py::ssize_t(h), py::ssize_t(w), py::ssize_t(nc) });
+    float* out = a.mutable_data();
+    for (int c = 0; c < nc; ++c) {
+        const float* in = image.channels[size_t(c)].data();
+        for (size_t i = 0; i < size_t(w) * size_t(h); ++i)
+            out[i * size_t(nc) + size_t(c)] = in[i];
+    }
+    return a;
+}
 
 // A dict of maps ({"albedo": ..., "normal": ...}) as the Material texsyn.material() makes.
 std::shared_ptr<const PyMaterial> material_of_dict(const Call& call, py::dict maps)
@@ -316,6 +333,8 @@ void read_keywords(Call& call, py::dict kwargs)
     std::string colorconfig;
     py::object iscolorspace = py::none();
     std::vector<std::string> known = common_keywords();
+    if (call.method->subbands)
+        known.push_back("subbands");
     for (const OptionField& f : call.options.table().fields())
         if (f.type != OptionType::OutputFile)
             known.push_back(keyword_of(f.name));
@@ -331,6 +350,8 @@ void read_keywords(Call& call, py::dict kwargs)
             colorconfig = value.is_none() ? "" : py::str(value).cast<std::string>();
         else if (k == "iscolorspace")
             iscolorspace = py::reinterpret_borrow<py::object>(value);
+        else if (k == "subbands" && call.method->subbands)
+            call.subbands = PyObject_IsTrue(value.ptr()) == 1;
         else if (k == "tocolorspace")
             call.tocolorspace = value.is_none() ? "" : py::str(value).cast<std::string>();
         else {
@@ -526,6 +547,7 @@ py::object run_call(Call& call)
     settings.nthreads = call.threads;
     settings.progress = control.progress();
     settings.source_map = synthesizes_materials(m);
+    settings.subbands = call.subbands;
     ReadInputs r;
     MethodResult result;
     ErrorKind kind = ErrorKind::Runtime;
@@ -595,6 +617,12 @@ py::object run_call(Call& call)
             for (auto& [name, file] : result.files)
                 if (name == f.name)
                     files.append(to_python(std::move(file), { out.form.kind, OIIO::TypeFloat }));
+    if (call.subbands) { // float32 arrays of the decorrelated components, by part name
+        py::dict bands;
+        for (const NamedImage& band : result.subbands)
+            bands[band.name.c_str()] = planar_array(band.image);
+        files.append(bands);
+    }
     if (files.empty())
         return image;
     py::list all;

@@ -76,6 +76,10 @@ def _doc(row):
                    + ", ".join(f"the {o['option']}= image (float32; the tool writes it to "
                                "a file)" for o in writes)
                    + "; for a material set, a dict of maps by name first")
+    if row["subbands"]:
+        returns += ("; with subbands=True, a tuple of it and a dict of the sample's and the "
+                    "synthesis's pyramid subbands (float32 arrays of the decorrelated "
+                    "components, named as the parts of `texsyn --subbands`, docs/subbands.md)")
     lines += ["", "Returns:", _wrap(returns, "    "), ""]
     lines.append(f"Options (those of --{row['command']}; docs/{row['doc']}):")
     for o in row["options"]:
@@ -90,6 +94,9 @@ def _doc(row):
             what = "a mesh file (OBJ or PLY); "
         lines.append(f"    {o['name']}={default}")
         lines.append(_wrap(what + o["help"], "        "))
+    if row["subbands"]:
+        lines.append("    subbands=False")
+        lines.append(_wrap("True: also return the pyramid's subbands", "        "))
     lines.append("Every method also takes:")
     for name, default, what in _COMMON:
         lines.append(f"    {name}={default!r}")
@@ -109,6 +116,8 @@ def _make(row):
               for name, default, _ in _INPUTS[row["inputs"]]]
     params += [_P(o["name"], _P.KEYWORD_ONLY, default=o["default"])
                for o in row["options"] if o["file"] != "write"]
+    if row["subbands"]:
+        params.append(_P("subbands", _P.KEYWORD_ONLY, default=False))
     params += [_P(name, _P.KEYWORD_ONLY, default=default) for name, default, _ in _COMMON]
     method.__signature__ = _inspect.Signature(params)
     method.__name__ = method.__qualname__ = row["name"]
