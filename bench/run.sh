@@ -5,7 +5,7 @@
 # its time).
 # usage: bench/run.sh BUILD_DIR [filter-regex] [program: pyramid_bench (default), solid_bench,
 #        neighborhood_bench, choosy_bench, cascade_bench, patch_bench, surface_bench,
-#        fill_bench, material_bench]
+#        fill_bench, material_bench, python_overhead_bench (compare with python_overhead.sh)]
 set -euo pipefail
 bench="$1/bench/${3:-pyramid_bench}"
 filter="${2:-.}"
