@@ -2,6 +2,7 @@
 // The patch method: PatchMatch against the exhaustive search, the vote, the histogram kept,
 // the repetition penalty, determinism, the seams, bad input, and the structure of bricks,
 // tiles, weave, wood and flowers against the neighbourhood method's.
+#include <texsyn/fill.h>
 #include <texsyn/neighborhood.h>
 #include <texsyn/patch.h>
 #include <texsyn/random.h>
@@ -335,6 +336,27 @@ TEST(PatchSynthesize, BadInputIsRefused)
     OIIO::ImageBuf nan = sample;
     nan.setpixel(3, 4, 0, std::vector<float> { NAN, 0.0f, 0.0f }.data());
     EXPECT_NE(error_of(nan, options(64, 64)).find("NaN"), std::string::npos);
+}
+
+TEST(PatchOptions, ADefaultScheduleFollowsFewerLevels)
+{
+    // The default iterations (one value per level of three) serve levels=2: the coarsest
+    // value goes unused, as with levels=0. A list the user gives must fit.
+    PatchOptions opt;
+    opt.levels = 2;
+    std::string error;
+    EXPECT_TRUE(opt.validate(error)) << error;
+    EXPECT_EQ(opt.iterations_at(0), 1);
+    EXPECT_EQ(opt.iterations_at(1), 2);
+    opt.iterations = { 1, 2, 3 };
+    EXPECT_FALSE(opt.validate(error));
+    EXPECT_EQ(error, "iterations=1,2,3 : 3 values for levels=2 (give 1..2)");
+    FillOptions fill;
+    fill.levels = 1;
+    EXPECT_TRUE(fill.validate(error)) << error;
+    EXPECT_EQ(fill.iterations_at(0), 4);
+    fill.iterations = { 4, 6 };
+    EXPECT_FALSE(fill.validate(error));
 }
 
 namespace {

@@ -40,7 +40,7 @@ const OptionTable<FillOptions>& FillOptions::table()
 bool FillOptions::validate(std::string& error) const
 {
     return table().check(*this, error)
-        && detail::check_patch_schedule(patch, iterations, levels, error);
+        && detail::check_patch_schedule(patch, iterations, FillOptions().iterations, levels, error);
 }
 
 int FillOptions::iterations_at(int level) const

@@ -42,19 +42,20 @@ const OptionTable<PatchOptions>& PatchOptions::table()
 bool PatchOptions::validate(std::string& error) const
 {
     return table().check(*this, error)
-        && detail::check_patch_schedule(patch, iterations, levels, error);
+        && detail::check_patch_schedule(
+            patch, iterations, PatchOptions().iterations, levels, error);
 }
 
 namespace detail {
 
 bool check_patch_schedule(const std::vector<int>& patch, const std::vector<int>& iterations,
-    int levels, std::string& error)
+    const std::vector<int>& default_iterations, int levels, std::string& error)
 {
     if (!std::is_sorted(patch.rbegin(), patch.rend())) {
         error = option_error("patch", format_int_list(patch), "list the sizes largest first");
         return false;
     }
-    return levels == 0
+    return levels == 0 || iterations == default_iterations
         || check_level_list(
             "iterations", format_int_list(iterations), iterations.size(), levels, error);
 }

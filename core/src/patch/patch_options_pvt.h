@@ -36,8 +36,10 @@ void add_patch_terms(OptionTable<T>& t)
 }
 
 /// The rules between the schedule's options: patch sizes largest first, and (levels > 0)
-/// no more iteration values than levels. False with a message naming the option.
+/// no more iteration values than levels, unless `iterations` is still `default_iterations`
+/// (a default written for more levels than were asked for: its values past `levels` go
+/// unused, as with levels=0). False with a message naming the option.
 bool check_patch_schedule(const std::vector<int>& patch, const std::vector<int>& iterations,
-    int levels, std::string& error);
+    const std::vector<int>& default_iterations, int levels, std::string& error);
 
 } // namespace texsyn::detail
