@@ -358,7 +358,7 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             inputs.push_back(args[i + 1]);
             inputs.push_back(args[i + 2]);
             i += 2;
-            stack.push_back({ ItemKind::Image, args[i] });
+            stack.push_back({ ItemKind::Image, args[i], false, {} });
         } else if (is_flag(a)) {
             if (a == "--help" || a == "-h") {
                 if (i + 1 < args.size()) // --help METHOD
@@ -421,7 +421,7 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             check_written(i);
             inputs.push_back(a);
             stack.push_back({ is_analysis_filename(a) ? ItemKind::Analysis : ItemKind::Image,
-                OIIO::Filesystem::filename(a) });
+                OIIO::Filesystem::filename(a), false, {} });
         }
     }
     if (outputs.empty() && recipes.empty() && !report && !args.empty())

@@ -205,9 +205,10 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
     item.subbands = std::move(result.subbands);
     if (state.verbose) {
         const double secs = seconds_since(start);
-        const std::string opts = item.buf.initialized()
+        const std::string made_with = item.buf.initialized()
             ? std::string(item.buf.spec().get_string_attribute("synth:options"))
-            : options.format();
+            : std::string();
+        const std::string opts = made_with.empty() ? options.format() : made_with;
         std::string from;
         for (const StackItem& input : inputs)
             from += (from.empty() ? " from " : ", ") + short_name(input);

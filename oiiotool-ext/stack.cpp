@@ -19,8 +19,9 @@ std::string result_name(const Method& m, const std::vector<std::string>& inputs)
     std::string names;
     for (const std::string& input : inputs)
         names += (names.empty() ? "" : ", ") + input;
-    const std::string what
-        = m.output == MethodOutput::Analysis ? "analysis" : m.name + " synthesis";
+    const std::string what = m.output == MethodOutput::Analysis ? "analysis"
+        : m.output == MethodOutput::Material                    ? "material set"
+                                                                : m.name + " synthesis";
     return names.empty() ? what : what + " of " + names;
 }
 

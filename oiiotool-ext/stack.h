@@ -57,7 +57,7 @@ const char* item_kind_text(ItemKind kind);
 
 /// What the result of `method` on inputs called `inputs` (file names without folders, or
 /// results' names) is called: "pyramid synthesis of rust.png", "analysis of rust.png",
-/// "cascade synthesis".
+/// "material set of bricks.png", "cascade synthesis".
 std::string result_name(const Method& method, const std::vector<std::string>& inputs);
 
 /// The kind of item a method's result is (a report leaves its input: Image).

@@ -32,10 +32,13 @@ protected:
 // output's source map, here after isotropic=1 so that the normal map turns.
 TEST_F(MaterialCli, EveryMapFollowsTheSourceMap)
 {
-    CliRun r = texsyn("--seed 3 bricks.png --material:height=bricks_height.png:normal="
+    CliRun r = texsyn("-v --seed 3 bricks.png --material:height=bricks_height.png:normal="
                       "bricks_normal.png --patch:size=192x160:isotropic=1:map=coords.exr -o "
                       "out_{map}.exr");
     ASSERT_EQ(r.status, 0) << r.err;
+    // -v names the set and the options it was made with.
+    EXPECT_NE(r.err.find("--material search=albedo,height:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" from material set of bricks.png in "), std::string::npos) << r.err;
     for (const char* map : { "albedo", "height", "normal" })
         EXPECT_TRUE(fs::exists(dir / ("out_" + std::string(map) + ".exr"))) << map;
     EXPECT_FALSE(fs::exists(dir / "out_{map}.exr"));
