@@ -478,3 +478,24 @@ TEST(Tileable, ABandTooWideIsRefused)
         std::string::npos)
         << dst.geterror();
 }
+
+TEST(Tileable, SmallImagesWorkWithTheDefaultsOrSayWhatToChange)
+{
+    // 96x96: the default band leaves the coarsest levels no whole patch to copy; the
+    // automatic levels stop above them.
+    TileableOptions opt;
+    TileableReport report;
+    const OIIO::ImageBuf small = linear_crop("grass.png", 96, 96);
+    const OIIO::ImageBuf tile = make_tileable(small, opt, &report);
+    ASSERT_FALSE(tile.has_error()) << tile.geterror();
+    EXPECT_EQ(report.band, 22);
+    EXPECT_GT(report.changed_fraction, 0.0);
+    // 64x64: two 11-pixel patches are over a third of the side.
+    OIIO::ImageBuf dst;
+    EXPECT_FALSE(make_tileable(dst, linear_crop("grass.png", 64, 64), opt));
+    EXPECT_EQ(dst.geterror(),
+        "a 64x64 image is too small for a band two 11-pixel patches wide (at most a third of "
+        "its shorter side, 21): give a smaller patch= or band=");
+    opt.options.patch = { 7, 5 };
+    EXPECT_FALSE(make_tileable(linear_crop("grass.png", 64, 64), opt).has_error());
+}

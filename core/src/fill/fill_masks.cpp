@@ -71,6 +71,13 @@ std::vector<uint8_t> erode_box(const std::vector<uint8_t>& mask, int width, int 
         box_pass(mask, width, height, half, true, 0, all), width, height, half, false, 0, all);
 }
 
+bool has_source_patch(const CropLevel& crop, int patch)
+{
+    const std::vector<uint8_t> centres
+        = erode_box(crop.source, crop.width(), crop.height(), patch / 2);
+    return std::find(centres.begin(), centres.end(), uint8_t(1)) != centres.end();
+}
+
 std::vector<uint8_t> dilate_box(const std::vector<uint8_t>& mask, int width, int height, int half)
 {
     auto any = [](int ones, int) { return uint8_t(ones > 0); };

@@ -57,6 +57,9 @@ CropLevel reduce_crop(const CropLevel& fine, int nthreads);
 /// 1 where the (2 half + 1)^2 box around the pixel is all 1 in `mask` (0 near the edges).
 std::vector<uint8_t> erode_box(const std::vector<uint8_t>& mask, int width, int height, int half);
 
+/// Whether some patch x patch square of the crop lies wholly on source pixels.
+bool has_source_patch(const CropLevel& crop, int patch);
+
 /// 1 where the (2 half + 1)^2 box around the pixel has a 1 in `mask`.
 std::vector<uint8_t> dilate_box(const std::vector<uint8_t>& mask, int width, int height, int half);
 

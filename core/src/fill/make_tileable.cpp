@@ -58,8 +58,14 @@ bool tileable(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const TileableOp
     const int w = image.spec().width, h = image.spec().height, side = std::min(w, h);
     // 3/16 of the side: narrower bands leave courses of bricks and rows of tiles too little
     // room to change phase, and come out smudged.
-    const int band
-        = opt.band > 0 ? opt.band : std::max(2 * opt.options.patch.front(), 3 * side / 16);
+    const int patch = opt.options.patch.front();
+    const int band = opt.band > 0 ? opt.band : std::max(2 * patch, 3 * side / 16);
+    if (opt.band == 0 && 3 * band > side) {
+        dst.errorfmt("a {}x{} image is too small for a band two {}-pixel patches wide (at most "
+                     "a third of its shorter side, {}): give a smaller patch= or band=",
+            w, h, patch, side / 3);
+        return false;
+    }
     if (3 * band > side) {
         dst.errorfmt("{}",
             option_error("band", std::to_string(band),

@@ -131,6 +131,11 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
                 r.levels[0].planes, in.ncolor(), &r.levels[0].known, opt.guidance, opt.nthreads);
         for (size_t l = 1; l < r.levels.size(); ++l)
             r.levels[l] = detail::reduce_crop(r.levels[l - 1], opt.nthreads);
+        // The automatic choice also keeps only levels with a whole patch of the image's own
+        // pixels to copy (a wide band in a small image has none at its coarsest levels).
+        while (opt.levels == 0 && !sample && r.levels.size() > 1
+            && !detail::has_source_patch(r.levels.back(), opt.patch.front()))
+            r.levels.pop_back();
         total += detail::fill_work(r.levels, opt);
     }
     const OIIO::ImageBuf& copied_from = sample ? *sample : image;
