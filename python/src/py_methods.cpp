@@ -529,15 +529,16 @@ py::object run_call(Call& call)
 {
     const Method& m = *call.method;
     std::string error;
-    if (!call.options.validate(error))
-        raise_error(ErrorKind::Value, error);
     // The options' files are read as the tool reads them; in-memory option images are
-    // then named by what they are.
+    // named by what they are before the options are validated (a rule such as fill's
+    // "mask= is required" sees them).
     const MethodOptions file_options = call.options;
     for (auto& [field, arg] : call.option_images)
         if (!call.options.set(
                 field->name, arg.kind == ImageKind::Array ? "array" : "ImageBuf", error))
             raise_error(ErrorKind::Value, error);
+    if (!call.options.validate(error))
+        raise_error(ErrorKind::Value, error);
     const std::shared_ptr<const PyMaterial> material
         = call.inputs.size() == 1 ? call.inputs[0].material : nullptr;
 
