@@ -173,7 +173,7 @@ std::string option_text(const OptionField& f, const std::string& keyword, py::ha
         return scalar_text(keyword, v);
     std::string text;
     const char* sep = f.type == OptionType::Size ? "x" : ",";
-    for (py::handle item : py::reinterpret_borrow<py::sequence>(v))
+    for (py::object item : py::reinterpret_borrow<py::sequence>(v)) // owned, as in read_inputs
         text += (text.empty() ? "" : sep) + scalar_text(keyword, item);
     return text;
 }
@@ -407,19 +407,21 @@ void read_keywords(Call& call, py::dict kwargs)
 void read_inputs(Call& call, py::tuple args)
 {
     const Method& m = *call.method;
-    std::vector<py::handle> given;
+    // Owned: a sequence's items may be made as they are read (an array's rows), and a
+    // borrowed handle would outlive them.
+    std::vector<py::object> given;
     std::vector<std::string> roles;
     if (m.inputs == MethodInputs::Samples) {
         if (args.size() != 1 || py::isinstance<py::str>(args[0])
             || !py::isinstance<py::sequence>(args[0]))
             raise_error(ErrorKind::Value, call.function + ": expected one list of samples");
-        for (py::handle s : py::reinterpret_borrow<py::sequence>(args[0])) {
+        for (py::object s : py::reinterpret_borrow<py::sequence>(args[0])) {
             roles.push_back("samples[" + std::to_string(given.size()) + "]");
             given.push_back(s);
         }
     } else {
         for (py::handle a : args)
-            given.push_back(a);
+            given.push_back(py::reinterpret_borrow<py::object>(a));
         const char* role = m.inputs == MethodInputs::Sample ? "sample" : "image";
         for (size_t i = 0; i < given.size(); ++i)
             roles.push_back(m.inputs == MethodInputs::ImageAndSample && i == 1 ? "sample" : role);
@@ -435,7 +437,7 @@ void read_inputs(Call& call, py::tuple args)
                 + " input" + (max == 1 ? "" : "s") + ", got " + std::to_string(given.size()));
     for (size_t i = 0; i < given.size(); ++i) {
         CallInput in;
-        py::handle g = given[i];
+        const py::object& g = given[i];
         if (py::isinstance<PyAnalysis>(g)) {
             in.analysis = g.cast<const PyAnalysis&>().stats;
             in.name = in.analysis->source.empty() ? roles[i] : in.analysis->source;
