@@ -44,6 +44,9 @@ void name_channels(OIIO::ImageSpec& spec)
 ImageArg array_arg(py::handle obj, const std::string& what)
 {
     py::array given = py::reinterpret_borrow<py::array>(obj);
+    // An array in the other byte order ('>f4', '>u2' here) is read in this one: one copy.
+    if (!given.dtype().attr("isnative").cast<bool>())
+        given = given.attr("astype")(given.dtype().attr("newbyteorder")("=")).cast<py::array>();
     const py::dtype dt = given.dtype();
     const char kind = dt.kind();
     OIIO::TypeDesc type;
