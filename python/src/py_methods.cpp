@@ -313,20 +313,6 @@ std::shared_ptr<const PyMaterial> material_of_dict(const Call& call, py::dict ma
     return std::make_shared<PyMaterial>(run_call(m).cast<PyMaterial>());
 }
 
-// Keyword `k`'s integer `value` in [lo, hi]; ValueError otherwise.
-int64_t int_keyword(const std::string& k, py::handle value, int64_t lo, int64_t hi)
-{
-    if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value)) {
-        const long long v = PyLong_AsLongLong(value.ptr());
-        if (!PyErr_Occurred() && v >= lo && v <= hi)
-            return v;
-        PyErr_Clear();
-    }
-    raise_error(ErrorKind::Value,
-        k + "=" + py::repr(value).cast<std::string>() + " : expected an integer in "
-            + std::to_string(lo) + ".." + std::to_string(hi));
-}
-
 // Reads the keywords of a call to `method`.
 void read_keywords(Call& call, py::dict kwargs)
 {
@@ -341,9 +327,9 @@ void read_keywords(Call& call, py::dict kwargs)
     for (auto [key, value] : kwargs) {
         const std::string k = py::str(key).cast<std::string>();
         if (k == "seed")
-            call.seed = uint64_t(int_keyword(k, value, 0, 2147483647)); // as --seed takes it
+            call.seed = seed_keyword(value);
         else if (k == "threads")
-            call.threads = int(int_keyword(k, value, 0, 4096));
+            call.threads = threads_keyword(value);
         else if (k == "progress")
             call.progress = py::reinterpret_borrow<py::object>(value);
         else if (k == "colorconfig")

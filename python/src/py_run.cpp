@@ -3,9 +3,43 @@
 
 #include <stdexcept>
 
+#include <texsyn/methods.h>
+
+#include "py_errors.h"
+
 namespace py = pybind11;
 
 namespace texsyn::python {
+
+namespace {
+
+// Keyword `k`'s integer `value` (an int or an integer like numpy's, not a bool) in
+// [lo, hi]; ValueError otherwise.
+int64_t int_keyword(const std::string& k, py::handle value, int64_t lo, int64_t hi)
+{
+    if (PyIndex_Check(value.ptr()) && !py::isinstance<py::bool_>(value)) {
+        const long long v = PyLong_AsLongLong(
+            py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())).ptr());
+        if (!PyErr_Occurred() && v >= lo && v <= hi)
+            return v;
+        PyErr_Clear();
+    }
+    raise_error(ErrorKind::Value,
+        k + "=" + py::repr(value).cast<std::string>() + " : expected an integer in "
+            + std::to_string(lo) + ".." + std::to_string(hi));
+}
+
+} // namespace
+
+uint64_t seed_keyword(py::handle value)
+{
+    return uint64_t(int_keyword("seed", value, 0, max_seed));
+}
+
+int threads_keyword(py::handle value)
+{
+    return int(int_keyword("threads", value, 0, max_threads));
+}
 
 RunControl::RunControl(py::object callback)
     : m_callback(callback.is_none() ? py::object() : std::move(callback))

@@ -1,14 +1,22 @@
 // SPDX-License-Identifier: Apache-2.0
-// Library work run from Python: without the GIL, with progress reported to a Python
-// callable, and stopped by Ctrl-C.
+// Library work run from Python: its seed= and threads=, run without the GIL, with progress
+// reported to a Python callable, and stopped by Ctrl-C.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 
 #include <pybind11/pybind11.h>
 
 namespace texsyn::python {
+
+/// seed= as --seed takes it: an integer in 0..max_seed (methods.h); ValueError otherwise.
+uint64_t seed_keyword(pybind11::handle value);
+
+/// threads= as --threads takes it: an integer in 0..max_threads (0 = all cores);
+/// ValueError otherwise.
+int threads_keyword(pybind11::handle value);
 
 /// One run's link to Python. Construct with the GIL held; call progress() from the thread
 /// that made it, without the GIL (RunSettings::progress).
