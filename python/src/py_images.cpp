@@ -97,6 +97,7 @@ ImageArg imagebuf_arg(py::handle obj, const std::string& what)
     const OIIO::ImageBuf& buf = obj.cast<const OIIO::ImageBuf&>();
     ImageArg arg;
     arg.kind = ImageKind::ImageBuf;
+    arg.path = buf.name(); // its file, if it was read from one (synth:sample names it)
     if (!buf.initialized() || buf.spec().deep || buf.spec().image_pixels() == 0)
         raise_error(ErrorKind::Value,
             what + ": the ImageBuf holds no image"

@@ -21,7 +21,7 @@ enum class ImageKind {
 /// An image argument, read with the GIL held.
 struct ImageArg {
     ImageKind kind = ImageKind::Path;
-    std::string path;      ///< Path: the file
+    std::string path;      ///< Path: the file; ImageBuf: the file it was read from, if any
     OIIO::ImageBuf pixels; ///< Array, ImageBuf: its pixels (an array's are wrapped, not copied)
     OIIO::TypeDesc type;   ///< Array, ImageBuf: the pixel type given back
     pybind11::object keep; ///< the Python object whose memory `pixels` may wrap

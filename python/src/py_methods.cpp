@@ -236,8 +236,8 @@ std::string input_name(const ImageArg& arg, const std::string& role)
 {
     if (arg.kind == ImageKind::Path)
         return arg.path;
-    if (arg.kind == ImageKind::ImageBuf && !arg.pixels.name().empty())
-        return arg.pixels.name();
+    if (arg.kind == ImageKind::ImageBuf && !arg.path.empty())
+        return arg.path;
     return role;
 }
 
