@@ -89,6 +89,7 @@ ImageArg array_arg(py::handle obj, const std::string& what)
     arg.type = type;
     arg.pixels = OIIO::ImageBuf(spec, const_cast<void*>(a.data()));
     arg.keep = a;
+    arg.flat = a.ndim() == 2;
     return arg;
 }
 
@@ -146,7 +147,7 @@ OutputForm output_form(const ImageArg& arg)
 {
     if (arg.kind == ImageKind::Path)
         return { ImageKind::Array, OIIO::TypeFloat };
-    return { arg.kind, arg.type };
+    return { arg.kind, arg.type, arg.flat };
 }
 
 py::object to_python(OIIO::ImageBuf&& image, const OutputForm& form)
@@ -161,6 +162,8 @@ py::object to_python(OIIO::ImageBuf&& image, const OutputForm& form)
     }
     const OIIO::ImageSpec& spec = image.spec();
     std::vector<py::ssize_t> shape = { spec.height, spec.width, spec.nchannels };
+    if (form.flat && spec.nchannels == 1)
+        shape.pop_back();
     if (spec.depth > 1)
         shape.insert(shape.begin(), spec.depth);
     if (form.type == OIIO::TypeFloat && image.localpixels()

@@ -44,9 +44,9 @@ _INPUTS = {
 }
 
 _RETURNS = {
-    "image": "the image, given back as the input was given (array in, array out; ImageBuf "
-             "in, ImageBuf out with its synth:* metadata; a file name or no input: a "
-             "float32 array H x W x C)",
+    "image": "the image, given back as the input was given (array in, array out, H x W "
+             "in, H x W out; ImageBuf in, ImageBuf out with its synth:* metadata; a file "
+             "name or no input: a float32 array H x W x C)",
     "volume": "the volume: a float32 array D x H x W x C (an ImageBuf with depth D for an "
               "ImageBuf input)",
     "analysis": "a texsyn.Analysis (its .save(path) writes the .tsa file)",
