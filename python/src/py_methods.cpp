@@ -555,10 +555,10 @@ py::object run_call(Call& call)
             ok = result_layout(m, call.options, layouts, layout, error);
         }
         if (ok) {
-            kind = ErrorKind::Runtime;
             ok = material ? run_material_method(m, call.options, *material->material,
                      material->name, r.files, settings, result, error)
                           : run_method(m, call.options, r.inputs, r.files, settings, result, error);
+            kind = control.failure_kind();
         }
     }
     control.raise_if_stopped();

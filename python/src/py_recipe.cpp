@@ -59,8 +59,8 @@ py::object run(const Recipe& recipe, py::object threads, py::object progress)
         ok = run_recipe(recipe, image, nullptr, error, settings);
     }
     control.raise_if_stopped();
-    if (!ok)
-        raise_error(ErrorKind::Runtime, error);
+    if (!ok) // before any progress: a recipe that cannot run as written (a sample missing too)
+        raise_error(control.failure_kind(), error);
     return to_python(std::move(image), OutputForm {});
 }
 

@@ -61,6 +61,7 @@ RunControl::~RunControl()
 std::function<void(float)> RunControl::progress()
 {
     return [this](float fraction) {
+        m_progressed = true;
         py::gil_scoped_acquire gil;
         if (m_stopped)
             throw std::runtime_error("stopped");

@@ -9,6 +9,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include "py_errors.h"
+
 namespace texsyn::python {
 
 /// seed= as --seed takes it: an integer in 0..max_seed (methods.h); ValueError otherwise.
@@ -37,9 +39,15 @@ public:
     /// one did (else returns).
     void raise_if_stopped();
 
+    /// What a failed run's message becomes: ValueError if the run was refused before it
+    /// reported any progress (a memory estimate beyond the limit, options that cannot apply
+    /// to these inputs: methods check before they work), else RuntimeError.
+    ErrorKind failure_kind() const { return m_progressed ? ErrorKind::Runtime : ErrorKind::Value; }
+
 private:
     pybind11::object m_callback;
     std::unique_ptr<pybind11::error_already_set> m_stopped;
+    bool m_progressed = false; ///< progress() was called (on the run's thread)
 };
 
 } // namespace texsyn::python
