@@ -100,7 +100,7 @@ ImageArg imagebuf_arg(py::handle obj, const std::string& what)
     arg.kind = ImageKind::ImageBuf;
     arg.path = buf.name(); // its file, if it was read from one (synth:sample names it)
     if (!buf.initialized() || buf.spec().deep || buf.spec().image_pixels() == 0)
-        raise_error(ErrorKind::Value,
+        raise_error(buf.has_error() && !arg.path.empty() ? ErrorKind::File : ErrorKind::Value,
             what + ": the ImageBuf holds no image"
                 + (buf.has_error() ? " (" + buf.geterror(false) + ")" : std::string()));
     arg.type = buf.spec().format;

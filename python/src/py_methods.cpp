@@ -666,7 +666,11 @@ py::object apply_map_py(
     if (!ok)
         raise_error(ErrorKind::File, "texsyn.apply_map: " + error);
     if (!sample_size.is_none()) {
-        const auto wh = sample_size.cast<std::vector<int>>();
+        std::vector<int> wh;
+        try {
+            wh = sample_size.cast<std::vector<int>>();
+        } catch (const py::cast_error&) { // not a pair of integers: refused below
+        }
         if (wh.size() != 2 || wh[0] < 1 || wh[1] < 1)
             raise_error(ErrorKind::Value, "sample_size= : expected (width, height)");
         OIIO::ImageBuf tagged;
