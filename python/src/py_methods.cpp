@@ -450,6 +450,23 @@ struct ReadInputs {
     OptionImages files;
 };
 
+// read_sample() of `path` with its failures told apart: the file's (missing, unreadable,
+// truncated: File) from its pixels' (NaN or Inf, a colour space: Value).
+bool read_path_sample(const std::string& path, const ColorConfig& colors,
+    const std::string& colorspace, Sample& s, ErrorKind& kind, std::string& error, int nthreads)
+{
+    kind = ErrorKind::File;
+    if (is_analysis_filename(path))
+        return read_sample(path, colors, colorspace, s, error, nthreads);
+    OIIO::ImageSpec native;
+    OIIO::ImageBuf pixels;
+    if (!read_image(path, pixels, error, &native, sample_read_copies))
+        return false;
+    kind = ErrorKind::Value;
+    return sample_from_file_pixels(
+        std::move(pixels), native, path, colors, colorspace, s, error, nthreads);
+}
+
 // Reads the inputs of `call` and the images of its options: `file_options` name the files
 // (call.option_images are in memory). No GIL held; false with the message and its kind.
 bool read_call_inputs(Call& call, const MethodOptions& file_options, ReadInputs& r, ErrorKind& kind,
@@ -460,8 +477,8 @@ bool read_call_inputs(Call& call, const MethodOptions& file_options, ReadInputs&
         CallInput& in = call.inputs[i];
         Sample& s = r.samples[i];
         if (in.image && in.image->kind == ImageKind::Path) {
-            kind = ErrorKind::File;
-            if (!read_sample(in.image->path, *call.colors, in.colorspace, s, error, call.threads))
+            if (!read_path_sample(
+                    in.image->path, *call.colors, in.colorspace, s, kind, error, call.threads))
                 return false;
         } else if (in.image) {
             kind = ErrorKind::Value;
