@@ -168,3 +168,14 @@ def test_apply_map_gives_back_the_images_kind(samples, bricks_height, tmp_path):
     again = texsyn.apply_map(coords, bricks_buf)
     assert isinstance(again, oiio.ImageBuf)
     assert np.array_equal(again.get_pixels(oiio.UINT8), image.get_pixels(oiio.UINT8))
+
+
+def test_sequences_whose_items_are_made_as_they_are_read(stucco, bricks):
+    """An array's rows are new objects each time they are read: the samples of a stacked
+    array, and a size given as an array, are held while the call uses them."""
+    pair = [stucco, np.ascontiguousarray(bricks[:64, :64])]
+    options = dict(palette=0, pattern=1, iterations=1, seed=1)
+    from_list = texsyn.mix(pair, size=(32, 32), **options)
+    assert np.array_equal(texsyn.mix(np.stack(pair), size=(32, 32), **options), from_list)
+    assert np.array_equal(texsyn.mix(pair, size=np.array([32, 32]), **options), from_list)
+    assert np.array_equal(texsyn.mix(tuple(pair), size=(32, 32), **options), from_list)
