@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "py_run.h"
 
+#include <chrono>
 #include <stdexcept>
 
 #include <texsyn/methods.h>
@@ -62,9 +63,17 @@ std::function<void(float)> RunControl::progress()
 {
     return [this](float fraction) {
         m_progressed = true;
-        py::gil_scoped_acquire gil;
         if (m_stopped)
             throw std::runtime_error("stopped");
+        // Taking the GIL waits for the Python thread that holds it to let go (up to the
+        // interpreter's switch interval, 5 ms): a busy thread beside a run of many short
+        // steps would slow it several times over. Python is asked at most every
+        // python_interval, and at the end.
+        const auto now = std::chrono::steady_clock::now();
+        if (fraction < 1.0f && now - m_asked < python_interval)
+            return;
+        m_asked = now;
+        py::gil_scoped_acquire gil;
         try {
             if (PyErr_CheckSignals() != 0)
                 throw py::error_already_set();

@@ -3,6 +3,7 @@
 // reported to a Python callable, and stopped by Ctrl-C.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -30,9 +31,13 @@ public:
     RunControl(const RunControl&) = delete;
     RunControl& operator=(const RunControl&) = delete;
 
-    /// The RunSettings::progress of the run: takes the GIL, runs Python's signal handlers
-    /// (Ctrl-C raises KeyboardInterrupt there) and the callback; if either raises, keeps
-    /// that exception and throws to stop the run.
+    /// How often, at most, progress() takes the GIL (besides the last step, 1.0).
+    static constexpr std::chrono::milliseconds python_interval { 50 };
+
+    /// The RunSettings::progress of the run: at most every python_interval, and at the
+    /// end, takes the GIL, runs Python's signal handlers (Ctrl-C raises KeyboardInterrupt
+    /// there) and the callback; if either raises, keeps that exception and throws to stop
+    /// the run.
     std::function<void(float)> progress();
 
     /// With the GIL held, after a run: re-raises the Python exception that stopped it, if
@@ -47,7 +52,8 @@ public:
 private:
     pybind11::object m_callback;
     std::unique_ptr<pybind11::error_already_set> m_stopped;
-    bool m_progressed = false; ///< progress() was called (on the run's thread)
+    bool m_progressed = false;                     ///< progress() was called (on the run's thread)
+    std::chrono::steady_clock::time_point m_asked; ///< when progress() last took the GIL
 };
 
 } // namespace texsyn::python
