@@ -313,9 +313,9 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
                 throw CliError(a + " : missing argument");
             const std::string& v = args[++i];
             if (a == "--seed")
-                state.seed = uint64_t(int_argument("--seed", v, 0, 2147483647));
+                state.seed = uint64_t(int_argument("--seed", v, 0, max_seed));
             else if (a == "--threads")
-                state.threads = int(int_argument("--threads", v, 0, 1024));
+                state.threads = int(int_argument("--threads", v, 0, max_threads));
             else if (a == "--max-memory") {
                 std::string error;
                 if (!parse_memory_size(v, state.max_memory, error))

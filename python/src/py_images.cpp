@@ -44,6 +44,9 @@ void name_channels(OIIO::ImageSpec& spec)
 ImageArg array_arg(py::handle obj, const std::string& what)
 {
     py::array given = py::reinterpret_borrow<py::array>(obj);
+    // An array in the other byte order ('>f4', '>u2' here) is read in this one: one copy.
+    if (!given.dtype().attr("isnative").cast<bool>())
+        given = given.attr("astype")(given.dtype().attr("newbyteorder")("=")).cast<py::array>();
     const py::dtype dt = given.dtype();
     const char kind = dt.kind();
     OIIO::TypeDesc type;
@@ -86,6 +89,7 @@ ImageArg array_arg(py::handle obj, const std::string& what)
     arg.type = type;
     arg.pixels = OIIO::ImageBuf(spec, const_cast<void*>(a.data()));
     arg.keep = a;
+    arg.flat = a.ndim() == 2;
     return arg;
 }
 
@@ -94,8 +98,9 @@ ImageArg imagebuf_arg(py::handle obj, const std::string& what)
     const OIIO::ImageBuf& buf = obj.cast<const OIIO::ImageBuf&>();
     ImageArg arg;
     arg.kind = ImageKind::ImageBuf;
+    arg.path = buf.name(); // its file, if it was read from one (synth:sample names it)
     if (!buf.initialized() || buf.spec().deep || buf.spec().image_pixels() == 0)
-        raise_error(ErrorKind::Value,
+        raise_error(buf.has_error() && !arg.path.empty() ? ErrorKind::File : ErrorKind::Value,
             what + ": the ImageBuf holds no image"
                 + (buf.has_error() ? " (" + buf.geterror(false) + ")" : std::string()));
     arg.type = buf.spec().format;
@@ -142,7 +147,7 @@ OutputForm output_form(const ImageArg& arg)
 {
     if (arg.kind == ImageKind::Path)
         return { ImageKind::Array, OIIO::TypeFloat };
-    return { arg.kind, arg.type };
+    return { arg.kind, arg.type, arg.flat };
 }
 
 py::object to_python(OIIO::ImageBuf&& image, const OutputForm& form)
@@ -157,6 +162,8 @@ py::object to_python(OIIO::ImageBuf&& image, const OutputForm& form)
     }
     const OIIO::ImageSpec& spec = image.spec();
     std::vector<py::ssize_t> shape = { spec.height, spec.width, spec.nchannels };
+    if (form.flat && spec.nchannels == 1)
+        shape.pop_back();
     if (spec.depth > 1)
         shape.insert(shape.begin(), spec.depth);
     if (form.type == OIIO::TypeFloat && image.localpixels()

@@ -21,9 +21,10 @@ enum class ImageKind {
 /// An image argument, read with the GIL held.
 struct ImageArg {
     ImageKind kind = ImageKind::Path;
-    std::string path;      ///< Path: the file
+    std::string path;      ///< Path: the file; ImageBuf: the file it was read from, if any
     OIIO::ImageBuf pixels; ///< Array, ImageBuf: its pixels (an array's are wrapped, not copied)
     OIIO::TypeDesc type;   ///< Array, ImageBuf: the pixel type given back
+    bool flat = false;     ///< Array: given H x W, without a channel axis
     pybind11::object keep; ///< the Python object whose memory `pixels` may wrap
 };
 
@@ -38,15 +39,17 @@ ImageArg image_arg(pybind11::handle obj, const std::string& what);
 struct OutputForm {
     ImageKind kind = ImageKind::Array;
     OIIO::TypeDesc type = OIIO::TypeFloat;
+    bool flat = false; ///< Array: a one-channel result without its channel axis (H x W)
 };
 
-/// The form of a result made from `arg`: its kind and pixel type (a path's: float arrays).
+/// The form of a result made from `arg`: its kind, pixel type and whether it was an H x W
+/// array (a path's: float arrays).
 OutputForm output_form(const ImageArg& arg);
 
 /// `image` (float; a volume with spec.depth slices) given back in `form`: an array
-/// (H x W x C, or D x H x W x C; a float image is handed over without a copy) or an
-/// ImageBuf with its metadata. Integer forms convert the values (clamped, rounded) as OIIO
-/// writes them to integer files. Needs the GIL.
+/// (H x W x C, or D x H x W x C; without the channel axis for a flat form of one channel;
+/// a float image is handed over without a copy) or an ImageBuf with its metadata. Integer forms
+/// convert the values (clamped, rounded) as OIIO writes them to integer files. Needs the GIL.
 pybind11::object to_python(OIIO::ImageBuf&& image, const OutputForm& form);
 
 } // namespace texsyn::python

@@ -173,7 +173,7 @@ std::string option_text(const OptionField& f, const std::string& keyword, py::ha
         return scalar_text(keyword, v);
     std::string text;
     const char* sep = f.type == OptionType::Size ? "x" : ",";
-    for (py::handle item : py::reinterpret_borrow<py::sequence>(v))
+    for (py::object item : py::reinterpret_borrow<py::sequence>(v)) // owned, as in read_inputs
         text += (text.empty() ? "" : sep) + scalar_text(keyword, item);
     return text;
 }
@@ -236,8 +236,8 @@ std::string input_name(const ImageArg& arg, const std::string& role)
 {
     if (arg.kind == ImageKind::Path)
         return arg.path;
-    if (arg.kind == ImageKind::ImageBuf && !arg.pixels.name().empty())
-        return arg.pixels.name();
+    if (arg.kind == ImageKind::ImageBuf && !arg.path.empty())
+        return arg.path;
     return role;
 }
 
@@ -313,20 +313,6 @@ std::shared_ptr<const PyMaterial> material_of_dict(const Call& call, py::dict ma
     return std::make_shared<PyMaterial>(run_call(m).cast<PyMaterial>());
 }
 
-// Keyword `k`'s integer `value` in [lo, hi]; ValueError otherwise.
-int64_t int_keyword(const std::string& k, py::handle value, int64_t lo, int64_t hi)
-{
-    if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value)) {
-        const long long v = PyLong_AsLongLong(value.ptr());
-        if (!PyErr_Occurred() && v >= lo && v <= hi)
-            return v;
-        PyErr_Clear();
-    }
-    raise_error(ErrorKind::Value,
-        k + "=" + py::repr(value).cast<std::string>() + " : expected an integer in "
-            + std::to_string(lo) + ".." + std::to_string(hi));
-}
-
 // Reads the keywords of a call to `method`.
 void read_keywords(Call& call, py::dict kwargs)
 {
@@ -341,9 +327,9 @@ void read_keywords(Call& call, py::dict kwargs)
     for (auto [key, value] : kwargs) {
         const std::string k = py::str(key).cast<std::string>();
         if (k == "seed")
-            call.seed = uint64_t(int_keyword(k, value, 0, 2147483647)); // as --seed takes it
+            call.seed = seed_keyword(value);
         else if (k == "threads")
-            call.threads = int(int_keyword(k, value, 0, 4096));
+            call.threads = threads_keyword(value);
         else if (k == "progress")
             call.progress = py::reinterpret_borrow<py::object>(value);
         else if (k == "colorconfig")
@@ -407,19 +393,21 @@ void read_keywords(Call& call, py::dict kwargs)
 void read_inputs(Call& call, py::tuple args)
 {
     const Method& m = *call.method;
-    std::vector<py::handle> given;
+    // Owned: a sequence's items may be made as they are read (an array's rows), and a
+    // borrowed handle would outlive them.
+    std::vector<py::object> given;
     std::vector<std::string> roles;
     if (m.inputs == MethodInputs::Samples) {
         if (args.size() != 1 || py::isinstance<py::str>(args[0])
             || !py::isinstance<py::sequence>(args[0]))
             raise_error(ErrorKind::Value, call.function + ": expected one list of samples");
-        for (py::handle s : py::reinterpret_borrow<py::sequence>(args[0])) {
+        for (py::object s : py::reinterpret_borrow<py::sequence>(args[0])) {
             roles.push_back("samples[" + std::to_string(given.size()) + "]");
             given.push_back(s);
         }
     } else {
         for (py::handle a : args)
-            given.push_back(a);
+            given.push_back(py::reinterpret_borrow<py::object>(a));
         const char* role = m.inputs == MethodInputs::Sample ? "sample" : "image";
         for (size_t i = 0; i < given.size(); ++i)
             roles.push_back(m.inputs == MethodInputs::ImageAndSample && i == 1 ? "sample" : role);
@@ -435,7 +423,7 @@ void read_inputs(Call& call, py::tuple args)
                 + " input" + (max == 1 ? "" : "s") + ", got " + std::to_string(given.size()));
     for (size_t i = 0; i < given.size(); ++i) {
         CallInput in;
-        py::handle g = given[i];
+        const py::object& g = given[i];
         if (py::isinstance<PyAnalysis>(g)) {
             in.analysis = g.cast<const PyAnalysis&>().stats;
             in.name = in.analysis->source.empty() ? roles[i] : in.analysis->source;
@@ -462,6 +450,23 @@ struct ReadInputs {
     OptionImages files;
 };
 
+// read_sample() of `path` with its failures told apart: the file's (missing, unreadable,
+// truncated: File) from its pixels' (NaN or Inf, a colour space: Value).
+bool read_path_sample(const std::string& path, const ColorConfig& colors,
+    const std::string& colorspace, Sample& s, ErrorKind& kind, std::string& error, int nthreads)
+{
+    kind = ErrorKind::File;
+    if (is_analysis_filename(path))
+        return read_sample(path, colors, colorspace, s, error, nthreads);
+    OIIO::ImageSpec native;
+    OIIO::ImageBuf pixels;
+    if (!read_image(path, pixels, error, &native, sample_read_copies))
+        return false;
+    kind = ErrorKind::Value;
+    return sample_from_file_pixels(
+        std::move(pixels), native, path, colors, colorspace, s, error, nthreads);
+}
+
 // Reads the inputs of `call` and the images of its options: `file_options` name the files
 // (call.option_images are in memory). No GIL held; false with the message and its kind.
 bool read_call_inputs(Call& call, const MethodOptions& file_options, ReadInputs& r, ErrorKind& kind,
@@ -472,8 +477,8 @@ bool read_call_inputs(Call& call, const MethodOptions& file_options, ReadInputs&
         CallInput& in = call.inputs[i];
         Sample& s = r.samples[i];
         if (in.image && in.image->kind == ImageKind::Path) {
-            kind = ErrorKind::File;
-            if (!read_sample(in.image->path, *call.colors, in.colorspace, s, error, call.threads))
+            if (!read_path_sample(
+                    in.image->path, *call.colors, in.colorspace, s, kind, error, call.threads))
                 return false;
         } else if (in.image) {
             kind = ErrorKind::Value;
@@ -529,15 +534,16 @@ py::object run_call(Call& call)
 {
     const Method& m = *call.method;
     std::string error;
-    if (!call.options.validate(error))
-        raise_error(ErrorKind::Value, error);
     // The options' files are read as the tool reads them; in-memory option images are
-    // then named by what they are.
+    // named by what they are before the options are validated (a rule such as fill's
+    // "mask= is required" sees them).
     const MethodOptions file_options = call.options;
     for (auto& [field, arg] : call.option_images)
         if (!call.options.set(
                 field->name, arg.kind == ImageKind::Array ? "array" : "ImageBuf", error))
             raise_error(ErrorKind::Value, error);
+    if (!call.options.validate(error))
+        raise_error(ErrorKind::Value, error);
     const std::shared_ptr<const PyMaterial> material
         = call.inputs.size() == 1 ? call.inputs[0].material : nullptr;
 
@@ -566,10 +572,10 @@ py::object run_call(Call& call)
             ok = result_layout(m, call.options, layouts, layout, error);
         }
         if (ok) {
-            kind = ErrorKind::Runtime;
             ok = material ? run_material_method(m, call.options, *material->material,
                      material->name, r.files, settings, result, error)
                           : run_method(m, call.options, r.inputs, r.files, settings, result, error);
+            kind = control.failure_kind();
         }
     }
     control.raise_if_stopped();
@@ -677,7 +683,11 @@ py::object apply_map_py(
     if (!ok)
         raise_error(ErrorKind::File, "texsyn.apply_map: " + error);
     if (!sample_size.is_none()) {
-        const auto wh = sample_size.cast<std::vector<int>>();
+        std::vector<int> wh;
+        try {
+            wh = sample_size.cast<std::vector<int>>();
+        } catch (const py::cast_error&) { // not a pair of integers: refused below
+        }
         if (wh.size() != 2 || wh[0] < 1 || wh[1] < 1)
             raise_error(ErrorKind::Value, "sample_size= : expected (width, height)");
         OIIO::ImageBuf tagged;

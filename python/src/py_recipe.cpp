@@ -45,11 +45,11 @@ Recipe recipe_from_json(const std::string& text, py::object base_dir)
     return recipe;
 }
 
-py::object run(const Recipe& recipe, int threads, py::object progress)
+py::object run(const Recipe& recipe, py::object threads, py::object progress)
 {
     RunControl control(progress);
     RunSettings settings;
-    settings.nthreads = threads;
+    settings.nthreads = threads_keyword(threads);
     settings.progress = control.progress();
     OIIO::ImageBuf image;
     std::string error;
@@ -59,8 +59,8 @@ py::object run(const Recipe& recipe, int threads, py::object progress)
         ok = run_recipe(recipe, image, nullptr, error, settings);
     }
     control.raise_if_stopped();
-    if (!ok)
-        raise_error(ErrorKind::Runtime, error);
+    if (!ok) // before any progress: a recipe that cannot run as written (a sample missing too)
+        raise_error(control.failure_kind(), error);
     return to_python(std::move(image), OutputForm {});
 }
 
@@ -93,7 +93,8 @@ void register_recipe(py::module_& m)
             py::arg("base_dir") = py::none(),
             "The recipe as JSON with every option written out; paths relative to base_dir\n"
             "(default: the current folder).")
-        .def("run", &run, py::kw_only(), py::arg("threads") = 0, py::arg("progress") = py::none(),
+        .def("run", &run, py::kw_only(), py::arg("threads") = py::int_(0),
+            py::arg("progress") = py::none(),
             "Synthesizes the recipe: a float32 array (H x W x C; a volume D x H x W x C) in its\n"
             "tocolorspace (scene-linear by default), colour associated with alpha - the pixels\n"
             "`texsyn ... -d float -o out.exr` writes. Same seed, same pixels at any threads=.")

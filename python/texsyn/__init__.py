@@ -19,8 +19,9 @@ _P = _inspect.Parameter
 _COMMON = (
     ("seed", 0, "random seed; the same seed gives the same pixels at any threads="),
     ("threads", 0, "worker threads (0: one per core)"),
-    ("progress", None, "a callable taking the fraction done (0..1), called on this thread; "
-                       "an exception it raises stops the run (Ctrl-C does too)"),
+    ("progress", None, "a callable taking the fraction done (0..1), called on this thread "
+                       "at most every 50 ms and at the end; an exception it raises stops "
+                       "the run (Ctrl-C does too)"),
     ("colorconfig", None, "the OCIO config file (None: $OCIO, else texsyn's bundled config)"),
     ("iscolorspace", None, "the inputs' colour space: a name, or a list with one per input "
                            "(None: a file's or ImageBuf's tags; uint8/uint16 arrays sRGB, "
@@ -44,9 +45,9 @@ _INPUTS = {
 }
 
 _RETURNS = {
-    "image": "the image, given back as the input was given (array in, array out; ImageBuf "
-             "in, ImageBuf out with its synth:* metadata; a file name or no input: a "
-             "float32 array H x W x C)",
+    "image": "the image, given back as the input was given (array in, array out, H x W "
+             "in, H x W out; ImageBuf in, ImageBuf out with its synth:* metadata; a file "
+             "name or no input: a float32 array H x W x C)",
     "volume": "the volume: a float32 array D x H x W x C (an ImageBuf with depth D for an "
               "ImageBuf input)",
     "analysis": "a texsyn.Analysis (its .save(path) writes the .tsa file)",

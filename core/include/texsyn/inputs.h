@@ -47,6 +47,15 @@ constexpr int sample_read_copies = 4;
 bool read_sample(const std::string& filename, const ColorConfig& colors,
     const std::string& colorspace, Sample& sample, std::string& error, int nthreads = 0);
 
+/// What read_sample() does with an image file once read_image() has read it (`native`:
+/// the file's own spec, of which it says): the sample of `pixels`, converted from
+/// `colorspace` ("" = guessed from `native`). Separate so that a front end can tell the
+/// file's faults (read_image's) from its pixels'. Fails (false, `error` naming `filename`)
+/// on NaN/Inf pixels or an unknown colour space.
+bool sample_from_file_pixels(OIIO::ImageBuf pixels, const OIIO::ImageSpec& native,
+    const std::string& filename, const ColorConfig& colors, const std::string& colorspace,
+    Sample& sample, std::string& error, int nthreads = 0);
+
 /// Makes a sample of an image already in memory (a Python array or ImageBuf) as
 /// read_sample() makes one of a file: `pixels` (any pixel type, the values as stored;
 /// colour associated with alpha unless flagged "oiio:UnassociatedAlpha") converted from

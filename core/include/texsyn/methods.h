@@ -166,6 +166,13 @@ struct MethodInput {
     std::string name; ///< what to call it in messages and reports, e.g. its file name
 };
 
+/// The largest seed every front end takes (--seed, a recipe's "seed", Python's seed=): the
+/// seed is written as synth:seed, an int attribute.
+constexpr int64_t max_seed = 2147483647;
+/// The most worker threads every front end takes (--threads, Python's threads=; 0 = all
+/// cores).
+constexpr int max_threads = 1024;
+
 /// What the front end sets besides the options; none of it changes the result.
 struct RunSettings {
     uint64_t seed = 0;

@@ -40,8 +40,16 @@ bool read_sample(const std::string& filename, const ColorConfig& colors,
     // conversion's two working copies.
     OIIO::ImageSpec native;
     OIIO::ImageBuf pixels;
-    if (!read_image(filename, pixels, error, &native, sample_read_copies))
-        return false;
+    return read_image(filename, pixels, error, &native, sample_read_copies)
+        && sample_from_file_pixels(
+            std::move(pixels), native, filename, colors, colorspace, sample, error, nthreads);
+}
+
+bool sample_from_file_pixels(OIIO::ImageBuf pixels, const OIIO::ImageSpec& native,
+    const std::string& filename, const ColorConfig& colors, const std::string& colorspace,
+    Sample& sample, std::string& error, int nthreads)
+{
+    Sample s;
     // The pixels are float now: what the file says of them (its type, its colour tags)
     // is in its native spec.
     ColorConfig::Guess guess { colorspace, "as asked (--iscolorspace)", "" };

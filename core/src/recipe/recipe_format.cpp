@@ -162,7 +162,7 @@ bool set_key(Recipe& r, const std::string& key, const std::vector<std::string>& 
         return set_method(r, value, error);
     if (key == "seed") {
         int64_t v = 0;
-        if (!parse_int_option(key, value, 0, 2147483647, v, error))
+        if (!parse_int_option(key, value, 0, max_seed, v, error))
             return false;
         r.seed = uint64_t(v);
         return true;
