@@ -373,9 +373,12 @@ void read_keywords(Call& call, py::dict kwargs)
     std::vector<std::string> spaces;
     if (py::isinstance<py::str>(iscolorspace))
         spaces.assign(std::max<size_t>(1, call.inputs.size()), iscolorspace.cast<std::string>());
-    else if (!iscolorspace.is_none())
+    else if (py::isinstance<py::sequence>(iscolorspace))
         for (py::handle s : iscolorspace)
             spaces.push_back(s.is_none() ? "" : py::str(s).cast<std::string>());
+    else if (!iscolorspace.is_none())
+        raise_error(ErrorKind::Value,
+            "iscolorspace= : expected a colour space name, or a list of one per input");
     if (!spaces.empty() && spaces.size() != call.inputs.size())
         raise_error(ErrorKind::Value,
             "iscolorspace= : " + std::to_string(spaces.size()) + " colour spaces for "
@@ -669,6 +672,11 @@ py::object apply_map_py(
         raise_error(ErrorKind::Value, "normal=" + normal + " : expected none, opengl or directx");
     ImageArg m = image_arg(map, "map");
     ImageArg i = image_arg(image, "image");
+    // An array map is what a copying method returned: its channels are x, y (and t).
+    if (m.kind == ImageKind::Array && (m.pixels.nchannels() == 2 || m.pixels.nchannels() == 3)) {
+        const std::vector<std::string> xyt { "x", "y", "t" };
+        m.pixels.specmod().channelnames.assign(xyt.begin(), xyt.begin() + m.pixels.nchannels());
+    }
     const OutputForm form = output_form(i);
     OIIO::ImageBuf dst;
     std::string error;

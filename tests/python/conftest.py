@@ -34,6 +34,7 @@ _CROPS = {
     "rust.png": ("rust.png", 32, 32, 64),
     "bricks.png": ("bricks.png", 0, 0, 96),
     "bricks_height.png": ("bricks_height.png", 0, 0, 96),
+    "bricks_normal.png": ("bricks_normal.png", 0, 0, 96),
 }
 
 
@@ -88,6 +89,12 @@ def bricks(samples):
 def bricks_height(samples):
     """The bricks' height map: 96 x 96 x 1 uint8."""
     return read_pixels(samples["bricks_height.png"], oiio.UINT8)
+
+
+@pytest.fixture(scope="session")
+def bricks_normal(samples):
+    """The bricks' tangent-space normal map (OpenGL): 96 x 96 x 3 uint8."""
+    return read_pixels(samples["bricks_normal.png"], oiio.UINT8)
 
 
 @pytest.fixture(scope="session")

@@ -93,6 +93,15 @@ def test_copying_methods_return_their_source_map(stucco, method, options):
     assert np.array_equal(texsyn.apply_map(coords, stucco), out)
 
 
+def test_a_turned_source_map_array_turns_normal_maps(bricks, bricks_normal):
+    # isotropic=1 gives a three-channel array (x, y, t); apply_map takes it as it is.
+    maps, coords = texsyn.patch({"albedo": bricks, "normal": bricks_normal}, size=(48, 48),
+                                isotropic=1, seed=2)
+    assert coords.shape == (48, 48, 3)
+    assert np.array_equal(texsyn.apply_map(coords, bricks_normal, normal="opengl"),
+                          maps["normal"])
+
+
 def twice(image):
     """`image` at twice its size, each pixel a 2 x 2 block."""
     return np.repeat(np.repeat(image, 2, axis=0), 2, axis=1)
