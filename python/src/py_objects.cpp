@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "py_objects.h"
 
+#include <filesystem>
+
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "py_errors.h"
 
@@ -48,13 +51,13 @@ void register_objects(py::module_& m)
         "them (.tsa): taken wherever a method takes a sample or its analysis.")
         .def_static(
             "load",
-            [](const std::string& path) {
+            [](const std::filesystem::path& path) {
                 auto stats = std::make_shared<TextureStatistics>();
                 std::string error;
                 bool ok;
                 {
                     py::gil_scoped_release release;
-                    ok = read_statistics(path, *stats, error);
+                    ok = read_statistics(path.string(), *stats, error);
                 }
                 if (!ok)
                     raise_error(ErrorKind::File, error);
@@ -63,12 +66,12 @@ void register_objects(py::module_& m)
             py::arg("path"), "Reads an analysis file (.tsa).")
         .def(
             "save",
-            [](const PyAnalysis& a, const std::string& path) {
+            [](const PyAnalysis& a, const std::filesystem::path& path) {
                 std::string error;
                 bool ok;
                 {
                     py::gil_scoped_release release;
-                    ok = write_statistics(path, *a.stats, error);
+                    ok = write_statistics(path.string(), *a.stats, error);
                 }
                 if (!ok)
                     raise_error(ErrorKind::File, error);
@@ -150,14 +153,14 @@ void register_objects(py::module_& m)
             "a mesh without UVs or with bake=0x0.")
         .def(
             "write_ply",
-            [](const PySurface& s, const std::string& path) {
+            [](const PySurface& s, const std::filesystem::path& path) {
                 std::vector<std::array<uint8_t, 3>> rgb;
                 std::string error;
                 bool ok;
                 {
                     py::gil_scoped_release release;
                     ok = surface_display_rgb(*s.texture, *s.bake.colors, rgb, error)
-                        && write_surface_ply(path, *s.texture, &rgb, error);
+                        && write_surface_ply(path.string(), *s.texture, &rgb, error);
                 }
                 if (!ok)
                     raise_error(ErrorKind::File, error);

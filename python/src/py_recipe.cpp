@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "py_recipe.h"
 
+#include <filesystem>
+
+#include <OpenImageIO/filesystem.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <texsyn/recipe.h>
 
@@ -20,17 +24,33 @@ std::string current_dir()
     return py::str(py::module_::import("os").attr("getcwd")()).cast<std::string>();
 }
 
-Recipe load_recipe(const std::string& name)
+// A recipe name (a path, perhaps with "?arguments") with its path made absolute against the
+// current folder, so that the recipe's relative paths stay right after a chdir.
+std::string absolute_recipe_name(const std::string& text)
 {
+    const size_t q = text.find('?');
+    const std::string arguments = q == std::string::npos ? "" : text.substr(q);
+    return std::filesystem::absolute(text.substr(0, q)).lexically_normal().string() + arguments;
+}
+
+Recipe load_recipe(const std::filesystem::path& name)
+{
+    const std::string absolute = absolute_recipe_name(name.string());
     Recipe recipe;
     std::string error;
     bool ok;
     {
         py::gil_scoped_release release;
-        ok = recipe_from_filename(name, recipe, error);
+        ok = recipe_from_filename(absolute, recipe, error);
     }
     if (!ok)
         raise_error(ErrorKind::Value, error);
+    // "x.texsyn" that is no file names the sample "x": say so now, not at run().
+    // (A sample that is itself a recipe name is left to run().)
+    for (const std::string& sample : recipe.samples)
+        if (sample.find(".texsyn") == std::string::npos && !OIIO::Filesystem::exists(sample))
+            raise_error(ErrorKind::File,
+                name.string() + ": no such recipe file or sample (" + sample + ")");
     return recipe;
 }
 
@@ -74,7 +94,9 @@ void register_recipe(py::module_& m)
         "plugin (oiiotool, maketx, OpenImageIO.ImageBuf).")
         .def_static("load", &load_recipe, py::arg("name"),
             "Reads a recipe: a .texsyn JSON file, or a name as the OIIO plugin takes it\n"
-            "(\"rust.png.texsyn?size=512x512&seed=7\"). Raises ValueError for a bad recipe.")
+            "(\"rust.png.texsyn?size=512x512&seed=7\"); relative paths in it are resolved now,\n"
+            "against the recipe's folder. Raises OSError if the recipe or a sample it names is\n"
+            "missing, ValueError for a bad recipe.")
         .def_static("from_json", &recipe_from_json, py::arg("text"),
             py::arg("base_dir") = py::none(),
             "A recipe from JSON text; relative paths are resolved against base_dir (default:\n"

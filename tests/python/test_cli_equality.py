@@ -3,6 +3,8 @@
 `texsyn --seed S FILE --METHOD:... -d float -o out.exr` writes (docs/python.md), an 8-bit
 array what an 8-bit -o writes, and a recipe the same pixels in Recipe.run, the tool and
 OpenImageIO reading it through texsyn's plugin."""
+import pathlib
+
 import numpy as np
 import OpenImageIO as oiio
 import pytest
@@ -90,6 +92,15 @@ def test_a_recipe_gives_the_same_pixels_in_python_the_tool_and_oiio(tool):
 def test_a_rest_name_is_a_recipe(samples, tool):
     name = f"{samples['stucco.png']}.texsyn?size=48x32&iterations=2&seed={SEED}"
     assert np.array_equal(texsyn.Recipe.load(name).run(), tool[0]["pyramid"])
+
+
+def test_a_recipe_keeps_its_paths_after_a_chdir(samples, tool, tmp_path, monkeypatch):
+    monkeypatch.chdir(samples["stucco.png"].parent)
+    recipe = texsyn.Recipe.load(
+        pathlib.Path(f"stucco.png.texsyn?size=48x32&iterations=2&seed={SEED}"))
+    monkeypatch.chdir(tmp_path)
+    assert np.array_equal(recipe.run(), tool[0]["pyramid"])
+    assert '"sample": "stucco.png"' in recipe.to_json(base_dir=samples["stucco.png"].parent)
 
 
 def test_an_8_bit_array_gives_what_an_8_bit_file_holds(samples, stucco_u8, cli):

@@ -247,8 +247,10 @@ def test_meshes(stucco, bad_files):
 
 def test_apply_map(stucco, bad_files):
     coords = np.zeros((8, 8, 2), np.float32)
+    # An array of three channels is taken as x, y, t: an image is not a map.
     refuses(lambda: texsyn.apply_map(stucco, stucco), ValueError,
-            "the source map has the channels R, G, B; expected the channels x, y")
+            "the source map's pixel (0, 0) holds (0.8862746, 0.81568635, 0.525490): not an "
+            "integer position inside the 64x64 sample with a transform 0..7")
     refuses(lambda: texsyn.apply_map(coords + 100, stucco), ValueError,
             "the source map's pixel (0, 0) holds (100, 100): not an integer position inside "
             "the 64x64 sample")
@@ -257,6 +259,8 @@ def test_apply_map(stucco, bad_files):
     for size in ("abc", (0, 1), (64,)):
         refuses(lambda: texsyn.apply_map(coords, stucco, sample_size=size), ValueError,
                 "sample_size= : expected (width, height)")
+    refuses(lambda: texsyn.apply_map(np.zeros((8, 8, 4), np.float32), stucco), ValueError,
+            "the source map has 4 channels; expected the channels x, y (and t)")
     refuses(lambda: texsyn.apply_map(str(bad_files / "missing.exr"), stucco), OSError,
             "no such file")
 
@@ -265,6 +269,8 @@ def test_recipes_and_analyses(stucco, bad_files):
     refuses(lambda: texsyn.Recipe.load(str(bad_files / "bad.texsyn")), ValueError,
             "malformed JSON")
     refuses(lambda: texsyn.Recipe.from_json("{bad"), ValueError, "malformed JSON")
+    refuses(lambda: texsyn.Recipe.load(bad_files / "missing.texsyn"), OSError,
+            "missing.texsyn: no such recipe file or sample")
     missing_sample = texsyn.Recipe.from_json(
         '{"texsyn_recipe": 1, "sample": "missing.png", "method": "pyramid"}',
         base_dir=str(bad_files))
@@ -277,3 +283,8 @@ def test_recipes_and_analyses(stucco, bad_files):
     refuses(lambda: texsyn.analyze(stucco).save(str(bad_files / "no" / "a.tsa")), OSError,
             "cannot write the analysis file")
     assert sorted(os.listdir(bad_files)) == before  # nothing left behind
+
+
+def test_colour_spaces_of_the_wrong_type(stucco):
+    refuses(lambda: texsyn.pyramid(stucco, iscolorspace=5), ValueError,
+            "iscolorspace= : expected a colour space name, or a list of one per input")
