@@ -639,11 +639,13 @@ TEST(Recipe, SpecIsWhatTheRunMakes)
         EXPECT_EQ(announced.channelnames, got.channelnames);
         EXPECT_EQ(announced.alpha_channel, got.alpha_channel);
         EXPECT_EQ(announced.format, OIIO::TypeFloat);
-        for (const OIIO::ParamValue& p : announced.extra_attribs)
-            if (p.name() != "synth:options")
+        for (const OIIO::ParamValue& p : announced.extra_attribs) {
+            if (p.name() != "synth:options") {
                 EXPECT_EQ(
                     announced.get_string_attribute(p.name()), got.get_string_attribute(p.name()))
                     << p.name();
+            }
+        }
         for (const OIIO::ParamValue& p : got.extra_attribs)
             EXPECT_TRUE(announced.find_attribute(p.name()))
                 << p.name() << " = " << got.get_string_attribute(p.name());
