@@ -25,6 +25,11 @@ std::string past_the_end(const OptionField& f)
     return format_number_list({ float(f.hi) + 1.0f });
 }
 
+bool ends_with(const std::string& s, const std::string& end)
+{
+    return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+}
+
 // lo..hi as the messages write it.
 std::string range_of(const OptionField& f)
 {
@@ -236,4 +241,66 @@ TEST(Methods, RowsGiveWhatTheySay)
         << error;
     EXPECT_EQ(result.image.spec().get_string_attribute("synth:image"), "photo.png");
     EXPECT_EQ(result.image.spec().get_string_attribute("synth:sample"), "rust.png");
+}
+
+// A stop flag (stop.h) ends every synthesis at its next step: set from the first progress
+// report, the run fails with "…: stopped" (the method's function names itself) and reports
+// nothing more. Set before the run, it never reports progress at all.
+TEST(Methods, AStopFlagEndsEveryRunAtItsNextStep)
+{
+    const OIIO::ImageBuf image = grey_image(96, 96);
+    OIIO::ImageBuf mask(OIIO::ImageSpec(96, 96, 1, OIIO::TypeFloat));
+    const float one = 1.0f;
+    OIIO::ImageBufAlgo::fill(mask, &one, OIIO::ROI(40, 56, 40, 56));
+    struct Case {
+        const char* method;
+        const char* options;
+        int inputs;
+    };
+    const Case cases[] = {
+        { "pyramid", "size=64x64:iterations=3", 1 },
+        { "solid", "size=16x16x16:iterations=2", 1 },
+        { "mix", "size=64x64:iterations=2:palette=0:pattern=1", 2 },
+        { "transfer", "iterations=2", 2 },
+        { "neighborhood", "size=48x48:levels=2", 1 },
+        { "choosy", "size=48x48:levels=2", 1 },
+        { "patch", "size=96x96", 1 },
+        { "fill", "mask=hole.exr:patch=7,5", 1 },
+        { "tileable", "patch=7,5", 1 },
+        { "cascade", "size=64x64", 0 },
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.method);
+        const Method& method = *find_method(c.method);
+        MethodOptions options = method.defaults();
+        std::string error;
+        ASSERT_TRUE(options.apply(c.options, error)) << error;
+        std::vector<MethodInput> inputs(size_t(c.inputs), { &image, nullptr, "s.png" });
+        OptionImages files;
+        if (std::string(c.method) == "fill")
+            files["mask"] = mask;
+
+        StopFlag stop { false };
+        int reports = 0;
+        RunSettings settings;
+        settings.stop = &stop;
+        settings.progress = [&](float) {
+            ++reports;
+            stop = true;
+        };
+        MethodResult result;
+        EXPECT_FALSE(run_method(method, options, inputs, files, settings, result, error));
+        EXPECT_TRUE(ends_with(error, ": stopped")) << error;
+        EXPECT_EQ(reports, 1);
+
+        reports = 0;
+        EXPECT_FALSE(run_method(method, options, inputs, files, settings, result, error));
+        EXPECT_TRUE(ends_with(error, ": stopped")) << error;
+        EXPECT_EQ(reports, 0);
+
+        // Unset, the same run completes.
+        stop = false;
+        settings.progress = {};
+        EXPECT_TRUE(run_method(method, options, inputs, files, settings, result, error)) << error;
+    }
 }

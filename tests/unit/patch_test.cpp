@@ -106,7 +106,8 @@ TEST(PatchMatch, ApproachesTheExhaustiveSearch)
     const detail::PixelImage padded = detail::interleave_padded(target_planes, pad, 0);
     const detail::CentreRange range { 48, 48, pad };
     detail::PatchField field = random_field(32, 32, range, 3);
-    const std::vector<uint32_t> similar = detail::similar_patches(sample.pixels, 0, patch, 2, 0);
+    const std::vector<uint32_t> similar
+        = detail::similar_patches(sample.pixels, 0, patch, 2, 0, nullptr);
     detail::MatchSettings match;
     match.patch = patch;
     match.coherence = 2;
@@ -146,8 +147,9 @@ TEST(PatchVote, AConsistentFieldOfAPeriodicSampleReproducesItExactly)
             field.source.push_back(uint32_t((y + period) * 3 * period + x + period));
     for (PatchVote kind : { PatchVote::Mean, PatchVote::Robust }) {
         std::vector<Plane> out;
-        detail::vote(sample, field, patch, kind, 0, out);
-        const std::vector<uint32_t> chosen = detail::nearest_votes(sample, field, patch, out, 0);
+        detail::vote(sample, field, patch, kind, 0, nullptr, out);
+        const std::vector<uint32_t> chosen
+            = detail::nearest_votes(sample, field, patch, out, 0, nullptr);
         for (size_t c = 0; c < out.size(); ++c)
             for (int y = 0; y < period; ++y)
                 for (int x = 0; x < period; ++x) {

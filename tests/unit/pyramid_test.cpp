@@ -581,3 +581,27 @@ TEST(Pyramid, TransformBandsEqualsBuildModifyCollapse)
         }
     }
 }
+
+// A stop flag set while bands are processed skips every band not yet started: on one
+// thread, the bands after the one that set it are never modified.
+TEST(Pyramid, TransformBandsSkipsTheBandsLeftOnceStopped)
+{
+    std::vector<std::unique_ptr<Pyramid>> pyramids;
+    pyramids.push_back(steerable(128, 96, 3, 4));
+    pyramids.push_back(laplacian(100, 60, 3, Boundary::Circular));
+    for (auto& pyr : pyramids) {
+        Plane image = test_image(pyr->width(), pyr->height(), 3);
+        StopFlag stop { false };
+        std::vector<int> modified;
+        std::vector<Plane> bands;
+        pyr->transform_bands(
+            image, bands,
+            [&](int b, Plane&) {
+                modified.push_back(b);
+                if (modified.size() == 2)
+                    stop = true;
+            },
+            1, &stop);
+        EXPECT_EQ(modified.size(), 2u) << pyr->nbands() << " bands";
+    }
+}

@@ -15,6 +15,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/options.h>
+#include <texsyn/stop.h>
 
 namespace texsyn {
 
@@ -84,6 +85,8 @@ struct CascadeOptions {
     /// Called with the fraction done (0..1) after each iteration, from the calling thread;
     /// may be empty. Not an option: it never changes the result.
     std::function<void(float)> progress;
+    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
+    const StopFlag* stop = nullptr;
 
     /// The table behind `--cascade:name=value`, synth:options and the docs.
     static const OptionTable<CascadeOptions>& table();

@@ -15,6 +15,7 @@
 
 #include <texsyn/options.h>
 #include <texsyn/source_map.h>
+#include <texsyn/stop.h>
 
 namespace texsyn {
 
@@ -55,6 +56,8 @@ struct ChoosyOptions {
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.
     std::function<void(float)> progress;
+    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
+    const StopFlag* stop = nullptr;
 
     /// The table behind `--choosy:name=value`, recipes, synth:options and the docs.
     static const OptionTable<ChoosyOptions>& table();

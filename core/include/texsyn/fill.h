@@ -17,6 +17,7 @@
 
 #include <texsyn/options.h>
 #include <texsyn/patch.h>
+#include <texsyn/stop.h>
 
 namespace texsyn {
 
@@ -47,6 +48,8 @@ struct FillOptions {
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.
     std::function<void(float)> progress;
+    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
+    const StopFlag* stop = nullptr;
 
     /// The table behind `--fill:name=value`, recipes, synth:options and the docs.
     static const OptionTable<FillOptions>& table();

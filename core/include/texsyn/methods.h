@@ -30,6 +30,7 @@
 
 #include <texsyn/options.h>
 #include <texsyn/stats.h>
+#include <texsyn/stop.h>
 #include <texsyn/subbands.h>
 
 namespace texsyn {
@@ -181,6 +182,9 @@ struct RunSettings {
     /// loops; may be empty. It may throw to stop the run (a front end's cancellation):
     /// run_method() then returns false with the exception's message and a partial result.
     std::function<void(float)> progress;
+    /// Set from any thread to stop the run within about a second (stop.h): run_method()
+    /// then returns false with "stopped". May be null.
+    const StopFlag* stop = nullptr;
     bool subbands = false; ///< fill MethodResult::subbands (methods that have them)
     /// Methods that copy sample pixels give their source map in MethodResult::files
     /// ("map") even when map= names no file (a material set needs it).

@@ -17,6 +17,7 @@
 #include <texsyn/options.h>
 #include <texsyn/search.h>
 #include <texsyn/source_map.h>
+#include <texsyn/stop.h>
 
 namespace texsyn {
 
@@ -65,6 +66,8 @@ struct NeighborhoodOptions {
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.
     std::function<void(float)> progress;
+    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
+    const StopFlag* stop = nullptr;
 
     /// The table behind `--neighborhood:name=value`, recipes, synth:options and the docs.
     static const OptionTable<NeighborhoodOptions>& table();

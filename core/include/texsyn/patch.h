@@ -19,6 +19,7 @@
 
 #include <texsyn/options.h>
 #include <texsyn/source_map.h>
+#include <texsyn/stop.h>
 
 namespace texsyn {
 
@@ -64,6 +65,8 @@ struct PatchOptions {
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.
     std::function<void(float)> progress;
+    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
+    const StopFlag* stop = nullptr;
 
     /// The table behind `--patch:name=value`, recipes, synth:options and the docs.
     static const OptionTable<PatchOptions>& table();

@@ -23,6 +23,7 @@
 
 #include <texsyn/fft.h>
 #include <texsyn/image.h>
+#include <texsyn/stop.h>
 #include <texsyn/volume.h>
 
 namespace texsyn {
@@ -55,9 +56,11 @@ public:
     /// build(image, bands); modify(b, bands[b]) for every b; collapse(bands, image) — with
     /// bit-identical results — but with the bands processed in parallel (each band's
     /// transforms and `modify` run on one thread), which scales far better than
-    /// parallelising each transform. `bands` receives the modified bands.
+    /// parallelising each transform. `bands` receives the modified bands. Once `stop` is
+    /// set (stop.h) the bands not yet started are skipped and it returns early, leaving
+    /// `image` and `bands` unspecified: the caller checks the flag.
     virtual void transform_bands(Plane& image, std::vector<Plane>& bands,
-        const BandFunction& modify, int nthreads = 0) const;
+        const BandFunction& modify, int nthreads = 0, const StopFlag* stop = nullptr) const;
 
 protected:
     Pyramid(int width, int height)

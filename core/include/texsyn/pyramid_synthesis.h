@@ -19,6 +19,7 @@
 #include <texsyn/options.h>
 #include <texsyn/pyramid.h>
 #include <texsyn/stats.h>
+#include <texsyn/stop.h>
 #include <texsyn/subbands.h>
 
 namespace texsyn {
@@ -49,6 +50,8 @@ struct PyramidOptions {
     /// Called with the fraction done (0..1) after each iteration of each channel, from the
     /// calling thread; may be empty. Not an option: it never changes the result.
     std::function<void(float)> progress;
+    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
+    const StopFlag* stop = nullptr;
 
     /// The table behind `--pyramid:name=value`, recipes, synth:options and the docs.
     static const OptionTable<PyramidOptions>& table();

@@ -98,7 +98,8 @@ std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir);
 /// and recipe.subbands set, the subbands are returned as well. Fails (false, `error`,
 /// prefixed by the sample's file name where the sample is at fault) if
 /// Recipe::validate() does or the synthesis does. `control` gives the run's threads and
-/// progress (RunSettings::nthreads, ::progress; its other members are the recipe's).
+/// progress and stop flag (RunSettings::nthreads, ::progress, ::stop; its other members
+/// are the recipe's).
 bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImage>* subbands,
     std::string& error, const RunSettings& control = {});
 

@@ -15,6 +15,7 @@
 #include <texsyn/fft.h>
 #include <texsyn/histogram.h>
 #include <texsyn/options.h>
+#include <texsyn/stop.h>
 
 namespace texsyn {
 
@@ -48,6 +49,8 @@ struct SolidOptions {
     /// Called with the fraction done (0..1) after each iteration of each channel, from the
     /// calling thread; may be empty. Not an option: it never changes the result.
     std::function<void(float)> progress;
+    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
+    const StopFlag* stop = nullptr;
 
     /// The table behind `--solid:name=value`, synth:options and the docs.
     static const OptionTable<SolidOptions>& table();

@@ -245,9 +245,8 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
                         = detail::resample_circular(scratch, opt.width, opt.height, opt.nthreads);
                 detail::apply_cascade_map(scratch, map, r, opt.curve, opt.nthreads);
                 std::swap(a, scratch);
-                if (opt.progress)
-                    opt.progress(work_done(
-                        opt, sizes, l, lattices_done * iterations + it + 1, lattices.size()));
+                detail::report_progress(opt.progress, opt.stop,
+                    work_done(opt, sizes, l, lattices_done * iterations + it + 1, lattices.size()));
             }
             ++lattices_done;
         }

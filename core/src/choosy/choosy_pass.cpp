@@ -10,6 +10,8 @@
 
 #include <texsyn/random.h>
 
+#include "methods/method_helpers_pvt.h"
+
 namespace texsyn::detail {
 
 namespace {
@@ -107,8 +109,8 @@ void choosy_passes(ChoosyTarget& target, ChoiceIndex& index, const ChoosyOptions
         pass.nthreads = opt.nthreads;
         pass.visited = [&](size_t n) {
             progress.done += n;
-            if (opt.progress)
-                opt.progress(float(double(progress.done) / double(progress.total)));
+            detail::report_progress(
+                opt.progress, opt.stop, float(double(progress.done) / double(progress.total)));
         };
         choosy_pass(target, index, pass);
     }

@@ -10,6 +10,7 @@
 
 #include <texsyn/pyramid.h>
 
+#include "methods/method_helpers_pvt.h"
 #include "patch/patch_pvt.h"
 
 namespace texsyn::detail {
@@ -209,15 +210,18 @@ void pushpull_fill(CropLevel& level, int nthreads)
 }
 
 void add_guidance(std::vector<Plane>& planes, int ncolour, const std::vector<uint8_t>* known,
-    float weight, int nthreads)
+    float weight, int nthreads, const StopFlag* stop)
 {
     CropLevel filled;
     filled.planes.assign(planes.begin(), planes.begin() + ncolour);
     if (known) {
         filled.known = *known;
         pushpull_fill(filled, nthreads);
+        throw_if_stopped(stop);
     }
-    Plane g = guidance_channel(filled.planes, feature_size(filled.planes));
+    const int feature = feature_size(filled.planes);
+    throw_if_stopped(stop);
+    Plane g = guidance_channel(filled.planes, feature);
     for (size_t i = 0; i < g.size(); ++i)
         g.data()[i] *= weight;
     planes.push_back(std::move(g));

@@ -66,8 +66,9 @@ std::vector<uint8_t> dilate_box(const std::vector<uint8_t>& mask, int width, int
 /// `planes` (the first `ncolour` its colours) with the guidance channel appended: the
 /// distance to the colours' edges (patch_pvt.h's guidance_channel), x `weight`, computed
 /// with the hole (`known` == 0, if given) push-pull filled so that its edge is not an edge.
+/// Throws "stopped" between its steps once `stop` is set (stop.h).
 void add_guidance(std::vector<Plane>& planes, int ncolour, const std::vector<uint8_t>* known,
-    float weight, int nthreads);
+    float weight, int nthreads, const StopFlag* stop);
 
 /// The pixels of the hole (known == 0) filled by push-pull interpolation from the known
 /// ones (OIIO's fillholes_pushpull).

@@ -8,6 +8,7 @@
 #include <texsyn/pyramid.h>
 #include <texsyn/random.h>
 
+#include "methods/method_helpers_pvt.h"
 #include "patch/patch_pvt.h"
 
 namespace texsyn::detail {
@@ -110,6 +111,7 @@ bool fill_region(std::vector<CropLevel>& levels, const std::vector<std::vector<P
         // random sources, below), the coarser result expanded below it.
         const bool nothing_known
             = std::find(crop.known.begin(), crop.known.end(), uint8_t(1)) == crop.known.end();
+        throw_if_stopped(opt.stop);
         if (l == nlevels - 1) {
             if (!nothing_known)
                 pushpull_fill(crop, opt.nthreads);
@@ -128,7 +130,8 @@ bool fill_region(std::vector<CropLevel>& levels, const std::vector<std::vector<P
         const std::vector<uint32_t> similar = l == 0
             ? std::vector<uint32_t>()
             : similar_patches(
-                sources.level.pixels, 0, patches.front(), opt.coherence, opt.nthreads);
+                sources.level.pixels, 0, patches.front(), opt.coherence, opt.nthreads, opt.stop);
+        throw_if_stopped(opt.stop);
         for (size_t pi = 0; pi < patches.size(); ++pi) {
             const int p = patches[pi], half = p / 2;
             choose_sources(sources, crop, self, p);
@@ -149,10 +152,11 @@ bool fill_region(std::vector<CropLevel>& levels, const std::vector<std::vector<P
             } else if (pi == 0) {
                 field = upsample_field(field, coarse_range, w, h, sources.range);
             }
+            throw_if_stopped(opt.stop);
             settle_sources(field, sources, self, active, opt.seed, 0x46494c0000000000ull + draws);
             coarse_range = sources.range;
             if (nothing_known && l == nlevels - 1 && pi == 0)
-                vote(sources.level, field, p, PatchVote::Mean, opt.nthreads, out, false);
+                vote(sources.level, field, p, PatchVote::Mean, opt.nthreads, opt.stop, out, false);
             for (int it = 0; it < opt.iterations_at(l); ++it) {
                 const PixelImage padded
                     = interleave_padded(out, half, opt.nthreads, Boundary::Reflect);
@@ -167,21 +171,25 @@ bool fill_region(std::vector<CropLevel>& levels, const std::vector<std::vector<P
                 match.stream = draws * 64 + uint64_t(it);
                 match.nthreads = opt.nthreads;
                 match.active = &active;
+                match.stop = opt.stop;
                 patch_match(sources.level, padded, half, similar, match, field);
+                throw_if_stopped(opt.stop);
                 std::vector<Plane> voted;
-                vote(sources.level, field, p, opt.vote, opt.nthreads, voted, false);
+                vote(sources.level, field, p, opt.vote, opt.nthreads, opt.stop, voted, false);
+                throw_if_stopped(opt.stop);
                 for (size_t c = 0; c < out.size(); ++c)
                     for (size_t i = 0; i < out[c].size(); ++i)
                         if (!crop.known[i])
                             out[c].data()[i] = voted[c].data()[i];
                 done += double(w) * double(h);
-                if (opt.progress)
-                    opt.progress(float(std::min(1.0, done / total)));
+                detail::report_progress(opt.progress, opt.stop, float(std::min(1.0, done / total)));
             }
             last_patch = p;
         }
     }
-    result.copied = nearest_votes(sources.level, field, last_patch, out, opt.nthreads, false);
+    result.copied
+        = nearest_votes(sources.level, field, last_patch, out, opt.nthreads, opt.stop, false);
+    throw_if_stopped(opt.stop);
     return true;
 }
 

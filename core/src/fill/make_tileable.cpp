@@ -75,6 +75,7 @@ bool tileable(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const TileableOp
         return false;
     }
     const OIIO::ImageBuf rolled = OIIO::ImageBufAlgo::circular_shift(image, w / 2, h / 2);
+    detail::throw_if_stopped(opt.options.stop);
     OIIO::ImageBuf filled;
     if (!texture_fill(filled, rolled, cross_mask(w, h, band), opt.options)) {
         dst.errorfmt("{}", filled.geterror());

@@ -71,6 +71,7 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     PlanarImage in;
     if (!planes_from_imagebuf(image, in, error))
         return fail("image: " + error);
+    detail::throw_if_stopped(opt.stop);
     const int w = in.width(), h = in.height();
     Plane mask_plane, exclude_plane;
     if (!control_plane(mask, "mask", w, h, mask_plane, error)
@@ -85,6 +86,7 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
                 + " and the image " + detail::count_text(in.nchannels(), "channel")
                 + "; they must match");
     }
+    detail::throw_if_stopped(opt.stop);
     const std::vector<uint8_t> hole = detail::above_zero(mask_plane);
     const size_t filled = size_t(std::count(hole.begin(), hole.end(), uint8_t(1)));
     if (!sample && filled == hole.size())
@@ -97,6 +99,7 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     size_t work = 0;
     int most_levels = 0;
     for (const PixelBox& box : detail::hole_regions(hole, w, h, opt.patch.front())) {
+        detail::throw_if_stopped(opt.stop);
         const int thickness = detail::hole_thickness(hole, w, box);
         int levels = detail::fill_levels(opt, thickness);
         Region r { box, crop_box(box, detail::fill_margin(opt, levels, thickness), w, h), {} };
@@ -116,21 +119,26 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     // The result starts as the image itself: pixels outside the mask stay bit-identical.
     if (!OIIO::ImageBufAlgo::copy(dst, image, OIIO::TypeDesc::FLOAT))
         return fail("image: " + dst.geterror());
+    detail::throw_if_stopped(opt.stop);
     std::vector<std::vector<Plane>> pyramid;
     if (sample) {
         std::vector<Plane> planes = from.channels;
         if (opt.guidance > 0.0f)
-            detail::add_guidance(planes, from.ncolor(), nullptr, opt.guidance, opt.nthreads);
+            detail::add_guidance(
+                planes, from.ncolor(), nullptr, opt.guidance, opt.nthreads, opt.stop);
         pyramid = gaussian_pyramid(planes, most_levels, Boundary::Reflect, opt.nthreads);
     }
     double total = 0.0, done = 0.0;
     for (Region& r : regions) {
         r.levels[0] = detail::crop_level(in.channels, hole, exclude ? &excluded : nullptr, r.crop);
+        detail::throw_if_stopped(opt.stop);
         if (opt.guidance > 0.0f)
-            detail::add_guidance(
-                r.levels[0].planes, in.ncolor(), &r.levels[0].known, opt.guidance, opt.nthreads);
-        for (size_t l = 1; l < r.levels.size(); ++l)
+            detail::add_guidance(r.levels[0].planes, in.ncolor(), &r.levels[0].known, opt.guidance,
+                opt.nthreads, opt.stop);
+        for (size_t l = 1; l < r.levels.size(); ++l) {
+            detail::throw_if_stopped(opt.stop);
             r.levels[l] = detail::reduce_crop(r.levels[l - 1], opt.nthreads);
+        }
         // The automatic choice also keeps only levels with a whole patch of the image's own
         // pixels to copy (a wide band in a small image has none at its coarsest levels).
         while (opt.levels == 0 && !sample && r.levels.size() > 1
@@ -174,8 +182,7 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
                 dst.setpixel(x + dst.xbegin(), y + dst.ybegin(), mine.data());
             }
     }
-    if (opt.progress)
-        opt.progress(1.0f);
+    detail::report_progress(opt.progress, opt.stop, 1.0f);
     if (report) {
         report->holes = int(regions.size());
         report->filled = filled;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 #include <unistd.h>
 
@@ -32,6 +33,20 @@ bool check_fft_backend(FftBackend fft, std::string& error)
 std::string count_text(int n, const std::string& noun)
 {
     return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
+void throw_if_stopped(const StopFlag* stop)
+{
+    if (stop_requested(stop))
+        throw std::runtime_error("stopped");
+}
+
+void report_progress(
+    const std::function<void(float)>& progress, const StopFlag* stop, float fraction)
+{
+    throw_if_stopped(stop);
+    if (progress)
+        progress(fraction);
 }
 
 Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream)

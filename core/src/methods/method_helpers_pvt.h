@@ -119,14 +119,24 @@ const Options& options_of(const MethodOptions& options)
     return *o;
 }
 
-/// The front ends' seed, threads and progress in a method's options struct.
+/// The front ends' seed, threads, progress and stop flag in a method's options struct.
 template <class Options>
 void apply_run_settings(const RunSettings& settings, Options& opt)
 {
     opt.seed = settings.seed;
     opt.nthreads = settings.nthreads;
     opt.progress = settings.progress;
+    opt.stop = settings.stop;
 }
+
+/// Throws std::runtime_error("stopped") if `stop` is set (stop.h): a method's check
+/// between the steps of a run, on the calling thread; guarded() makes it the function's
+/// "NAME: stopped".
+void throw_if_stopped(const StopFlag* stop);
+
+/// A step of a run done: throw_if_stopped(stop), then `progress(fraction)` if given.
+void report_progress(
+    const std::function<void(float)>& progress, const StopFlag* stop, float fraction);
 
 /// False with "fft=fftw : not available …" unless `fft`'s backend is built in.
 bool check_fft_backend(FftBackend fft, std::string& error);

@@ -193,8 +193,7 @@ bool synthesize_level(OutputLevel& out, const std::vector<Plane>& sample,
     const int w = out.width(), h = out.height();
     auto report = [&](size_t pixels) {
         done += pixels;
-        if (opt.progress)
-            opt.progress(float(double(done) / double(total)));
+        detail::report_progress(opt.progress, opt.stop, float(double(done) / double(total)));
     };
     {
         const LevelSearch search(

@@ -22,8 +22,8 @@ constexpr int kExclusion = 2;    // centres this close (each axis) are the same 
 
 } // namespace
 
-std::vector<uint32_t> similar_patches(
-    const PixelImage& sample, int cell_width, int patch, int coherence, int nthreads)
+std::vector<uint32_t> similar_patches(const PixelImage& sample, int cell_width, int patch,
+    int coherence, int nthreads, const StopFlag* stop)
 {
     const CentreRange range { sample.width, sample.height, patch / 2, cell_width };
     if (coherence < 2 || range.empty())
@@ -50,12 +50,14 @@ std::vector<uint32_t> similar_patches(
 
     // Near-identical neighbours (centres within kExclusion pixels, each way) are not
     // "similar patches elsewhere".
-    const std::vector<uint32_t> similar = similar_lists(index, k, kCandidates, kTreeEps, nthreads,
-        (2 * kExclusion + 1) * (2 * kExclusion + 1), [cw](uint32_t i, uint32_t j) {
+    const std::vector<uint32_t> similar = similar_lists(
+        index, k, kCandidates, kTreeEps, nthreads, (2 * kExclusion + 1) * (2 * kExclusion + 1),
+        [cw](uint32_t i, uint32_t j) {
             const int dx = int(j % uint32_t(cw)) - int(i % uint32_t(cw));
             const int dy = int(j / uint32_t(cw)) - int(i / uint32_t(cw));
             return std::abs(dx) <= kExclusion && std::abs(dy) <= kExclusion;
-        });
+        },
+        stop);
     // Vector indices to sample indices, rows moved to their centres.
     auto centre = [&](uint32_t i) {
         return uint32_t(range.y0() + int(i / uint32_t(cw))) * uint32_t(sample.width)

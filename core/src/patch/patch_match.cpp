@@ -135,6 +135,8 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
     OIIO::parallel_for(
         0, nblocks,
         [&](int64_t b) {
+            if (stop_requested(settings.stop))
+                return;
             for (int y = int(b) * kRowBlock; y < std::min(h, int(b + 1) * kRowBlock); ++y)
                 for (int x = 0; x < w; ++x) {
                     const size_t q = size_t(y) * size_t(w) + size_t(x);
@@ -172,6 +174,8 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
     PatchField next = field;
     const int radius0 = settings.radius > 0 ? settings.radius : std::max(sw, sample.pixels.height);
     for (size_t pass = 0; pass < settings.steps.size(); ++pass) {
+        if (stop_requested(settings.stop))
+            return;
         const int step = settings.steps[pass];
         if (!uses.empty()) {
             std::fill(uses.begin(), uses.end(), 0u);
@@ -185,6 +189,8 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
         OIIO::parallel_for(
             0, nblocks,
             [&](int64_t b) {
+                if (stop_requested(settings.stop))
+                    return;
                 for (int y = int(b) * kRowBlock; y < std::min(h, int(b + 1) * kRowBlock); ++y)
                     search_row(context, y);
             },

@@ -120,6 +120,9 @@ struct MatchSettings {
     int radius = 0; ///< the random search's first radius; 0 = the sample's larger side
     uint64_t seed = 0, stream = 0;
     int nthreads = 0;
+    /// Once set (stop.h), the row blocks and passes not yet started are skipped: the
+    /// field is then unspecified and the caller checks the flag.
+    const StopFlag* stop = nullptr;
     /// Per output pixel, 1 where the field is searched (a fill: patches over the hole);
     /// null = everywhere. Elsewhere source and distance are left as they are.
     const std::vector<uint8_t>* active = nullptr;
@@ -135,9 +138,10 @@ PatchField upsample_field(const PatchField& coarse, const CentreRange& coarse_ra
 /// Per sample centre (index y * width + x), its coherence - 1 most similar other centres
 /// (by the distance of the patches' every other pixel each way, ranked among a kd-tree's
 /// nearest in PCA space; centres within 2 pixels of it excluded, padded with itself),
-/// coherence - 1 entries each. Empty if coherence < 2.
-std::vector<uint32_t> similar_patches(
-    const PixelImage& sample, int cell_width, int patch, int coherence, int nthreads);
+/// coherence - 1 entries each. Empty if coherence < 2. Once `stop` is set (stop.h) it
+/// gives up early with unspecified lists: the caller checks the flag.
+std::vector<uint32_t> similar_patches(const PixelImage& sample, int cell_width, int patch,
+    int coherence, int nthreads, const StopFlag* stop);
 
 /// The squared distance between the patch centred at output (x, y) of `padded` (an
 /// interleave_padded with pad >= patch / 2 … only patch / 2 is read around it) and the
@@ -158,15 +162,16 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
 /// The vote: every output pixel the weighted average of the `patch` x `patch` source
 /// patches that overlap it, channel by channel, into `out` (planes of the field's size,
 /// sample.pixels.channels of them). `circular`: the output is a torus; otherwise only
-/// patches centred inside it overlap a pixel.
+/// patches centred inside it overlap a pixel. Once `stop` is set (stop.h) the rows not yet
+/// started are skipped, leaving `out` unspecified: the caller checks the flag.
 void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVote kind,
-    int nthreads, std::vector<Plane>& out, bool circular = true);
+    int nthreads, const StopFlag* stop, std::vector<Plane>& out, bool circular = true);
 
 /// Per output pixel, the sample pixel (index y * width + x) of those its overlapping patches
 /// voted for that is nearest (over every channel) to `average` (the vote's result);
-/// `circular` as for vote().
+/// `circular` and `stop` as for vote().
 std::vector<uint32_t> nearest_votes(const SampleLevel& sample, const PatchField& field, int patch,
-    const std::vector<Plane>& average, int nthreads, bool circular = true);
+    const std::vector<Plane>& average, int nthreads, const StopFlag* stop, bool circular = true);
 
 /// The mean and variance of a plane's values.
 void plane_moments(const Plane& plane, double& mean, double& variance);

@@ -210,7 +210,8 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
                                 : detail::upsample_field(field, coarse_range, lw, lh, first);
         coarse_range = first;
         if (l == levels - 1) { // the vote of the random field
-            detail::vote(level, field, patches.front(), PatchVote::Mean, opt.nthreads, out);
+            detail::vote(
+                level, field, patches.front(), PatchVote::Mean, opt.nthreads, opt.stop, out);
         } else { // the coarser result, expanded (Kwatra et al. §4)
             for (Plane& p : out)
                 p = expand_plane(p, lw, lh, Boundary::Circular, opt.nthreads);
@@ -220,8 +221,9 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
         // propagation and a local random search.
         const std::vector<uint32_t> similar = l == 0
             ? std::vector<uint32_t>()
-            : detail::similar_patches(
-                level.pixels, level.cell_width, patches.front(), opt.coherence, opt.nthreads);
+            : detail::similar_patches(level.pixels, level.cell_width, patches.front(),
+                opt.coherence, opt.nthreads, opt.stop);
+        detail::throw_if_stopped(opt.stop);
         for (size_t pi = 0; pi < patches.size(); ++pi) {
             const int p = patches[pi];
             const detail::CentreRange range { level.pixels.width, level.pixels.height, p / 2,
@@ -244,14 +246,17 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
                 match.seed = opt.seed;
                 match.stream = (uint64_t(l) * 8 + pi) * 64 + uint64_t(it);
                 match.nthreads = opt.nthreads;
+                match.stop = opt.stop;
                 detail::patch_match(level, padded, p / 2, similar, match, field);
-                detail::vote(level, field, p, opt.vote, opt.nthreads, out);
-                for (size_t c = 0; c < out.size(); ++c)
+                detail::throw_if_stopped(opt.stop);
+                detail::vote(level, field, p, opt.vote, opt.nthreads, opt.stop, out);
+                for (size_t c = 0; c < out.size(); ++c) {
+                    detail::throw_if_stopped(opt.stop);
                     match_histogram(
                         out[c], level.histograms[c], HistogramMode::Exact, opt.nthreads);
+                }
                 done += double(lw) * double(lh);
-                if (opt.progress)
-                    opt.progress(float(done / total));
+                detail::report_progress(opt.progress, opt.stop, float(done / total));
             }
         }
     }
@@ -259,7 +264,9 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
     // The copy: each pixel the voted-for sample pixel nearest the average, as a pixel of the
     // sample as given (a variant's pixel is one of the sample's).
     const int p = opt.patch.back();
-    const std::vector<uint32_t> picked = detail::nearest_votes(level, field, p, out, opt.nthreads);
+    const std::vector<uint32_t> picked
+        = detail::nearest_votes(level, field, p, out, opt.nthreads, opt.stop);
+    detail::throw_if_stopped(opt.stop);
     std::vector<uint32_t> chosen(picked.size());
     std::vector<uint8_t> turns(picked.size());
     for (size_t q = 0; q < picked.size(); ++q) {

@@ -40,7 +40,7 @@ void for_each_vote(
 } // namespace
 
 void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVote kind,
-    int nthreads, std::vector<Plane>& out, bool circular)
+    int nthreads, const StopFlag* stop, std::vector<Plane>& out, bool circular)
 {
     const int c = sample.pixels.channels, w = field.width, h = field.height;
     const size_t n = size_t(w) * size_t(h);
@@ -65,6 +65,8 @@ void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVo
     OIIO::parallel_for(
         0, h,
         [&](int64_t y) {
+            if (stop_requested(stop))
+                return;
             // Row accumulators, interleaved; offsets outermost so that the inner loop runs
             // along a row of the field.
             std::vector<float> acc(size_t(w) * size_t(c), 0.0f), total(size_t(w), 0.0f);
@@ -100,13 +102,15 @@ void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVo
 }
 
 std::vector<uint32_t> nearest_votes(const SampleLevel& sample, const PatchField& field, int patch,
-    const std::vector<Plane>& average, int nthreads, bool circular)
+    const std::vector<Plane>& average, int nthreads, const StopFlag* stop, bool circular)
 {
     const int c = sample.pixels.channels, w = field.width, h = field.height;
     std::vector<uint32_t> chosen(size_t(w) * size_t(h));
     OIIO::parallel_for(
         0, h,
         [&](int64_t y) {
+            if (stop_requested(stop))
+                return;
             std::vector<float> mean(static_cast<size_t>(c));
             for (int x = 0; x < w; ++x) {
                 for (int k = 0; k < c; ++k)

@@ -7,16 +7,20 @@
 
 namespace texsyn {
 
-void Pyramid::transform_bands(
-    Plane& image, std::vector<Plane>& bands, const BandFunction& modify, int nthreads) const
+void Pyramid::transform_bands(Plane& image, std::vector<Plane>& bands, const BandFunction& modify,
+    int nthreads, const StopFlag* stop) const
 {
     build(image, bands, nthreads);
     // One task per band: bands differ in size, so equal static chunks would not balance.
     OIIO::parallel_for_chunked(
         int64_t(0), int64_t(bands.size()), int64_t(1),
-        [&](int64_t b, int64_t) { modify(int(b), bands[size_t(b)]); },
+        [&](int64_t b, int64_t) {
+            if (!stop_requested(stop))
+                modify(int(b), bands[size_t(b)]);
+        },
         OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
-    collapse(bands, image, nthreads);
+    if (!stop_requested(stop))
+        collapse(bands, image, nthreads);
 }
 
 const char* pyramid_kind_name(PyramidKind kind)

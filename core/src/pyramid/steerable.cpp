@@ -175,7 +175,7 @@ public:
     }
 
     void transform_bands(Plane& image, std::vector<Plane>& bands, const BandFunction& modify,
-        int nthreads) const override
+        int nthreads, const StopFlag* stop) const override
     {
         assert(image.width() == m_width && image.height() == m_height);
         const int scales = int(m_levels.size()) - 1;
@@ -234,8 +234,14 @@ public:
         // One task per band (chunk size 1), largest first, taken by whichever thread is free:
         // bands differ 4x in size per level, so equal static chunks would not balance.
         OIIO::parallel_for_chunked(
-            int64_t(0), int64_t(nbands), int64_t(1), [&](int64_t b, int64_t) { process(int(b)); },
+            int64_t(0), int64_t(nbands), int64_t(1),
+            [&](int64_t b, int64_t) {
+                if (!stop_requested(stop))
+                    process(int(b));
+            },
             OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+        if (stop_requested(stop))
+            return;
 
         // Collapse, adding the contributions in the order collapse() does.
         std::vector<Cpx>& y = ws.y;

@@ -14,7 +14,7 @@ namespace {
 // component's tables.
 void match_texture(Plane& image, const QuantileTable& pixels,
     const std::vector<QuantileTable>& bands, const Pyramid& synthesis, int iterations,
-    HistogramMode mode, int nthreads, std::vector<Plane>& work,
+    HistogramMode mode, int nthreads, const StopFlag* stop, std::vector<Plane>& work,
     const std::function<void(int)>& iteration_done)
 {
     match_histogram(image, pixels, mode, nthreads);
@@ -22,8 +22,9 @@ void match_texture(Plane& image, const QuantileTable& pixels,
         // Bands are matched in parallel, each on one thread (see transform_bands).
         synthesis.transform_bands(
             image, work,
-            [&](int b, Plane& band) { match_histogram(band, bands[size_t(b)], mode, 1); },
-            nthreads);
+            [&](int b, Plane& band) { match_histogram(band, bands[size_t(b)], mode, 1); }, nthreads,
+            stop);
+        detail::throw_if_stopped(stop);
         match_histogram(image, pixels, mode, nthreads);
         iteration_done(it + 1);
     }
@@ -129,15 +130,14 @@ bool synthesize(OIIO::ImageBuf& dst, const TextureStatistics& stats, const Pyram
             out.channels.emplace_back(w, h, comp.mean);
         } else {
             auto iteration_done = [&](int it) {
-                if (opt.progress)
-                    opt.progress(
-                        float(c * opt.iterations + it) / float(std::max(1, nc * opt.iterations)));
+                detail::report_progress(opt.progress, opt.stop,
+                    float(c * opt.iterations + it) / float(std::max(1, nc * opt.iterations)));
             };
             Plane image = start ? std::move(initial.channels[size_t(c)])
                                 : detail::seeded_noise(w, h, opt.seed, uint64_t(c));
             std::vector<Plane> work; // freed after each component: one set is alive
             match_texture(image, comp.pixels, adjusted_bands(comp, stats, opt), *synthesis,
-                opt.iterations, opt.histogram, opt.nthreads, work, iteration_done);
+                opt.iterations, opt.histogram, opt.nthreads, opt.stop, work, iteration_done);
             out.channels.push_back(std::move(image));
         }
         if (subbands)

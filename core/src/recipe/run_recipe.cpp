@@ -109,6 +109,7 @@ bool run_recipe(const Recipe& recipe, OIIO::ImageBuf& dst, std::vector<NamedImag
     RunSettings settings;
     settings.nthreads = control.nthreads;
     settings.progress = control.progress;
+    settings.stop = control.stop;
     settings.seed = recipe.seed;
     settings.subbands = recipe.subbands && subbands;
     MethodResult result;

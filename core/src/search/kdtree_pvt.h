@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <texsyn/search.h>
+#include <texsyn/stop.h>
 
 #include "pca_pvt.h"
 
@@ -89,9 +90,10 @@ private:
 /// `excluded_count` at most are expected to be excluded) are re-ranked; a row with fewer
 /// than k such vectors is padded with i. Vectors are taken in the tree's order (neighbours
 /// in space one after the other: the searches share cache lines); each row depends on its
-/// vector alone, so the lists do not depend on nthreads.
+/// vector alone, so the lists do not depend on nthreads. Once `stop` is set (stop.h) the
+/// blocks of rows not yet started are skipped, leaving them unspecified: the caller checks.
 std::vector<uint32_t> similar_lists(const KdTreeIndex& index, size_t k, size_t candidates,
     float eps, int nthreads, size_t excluded_count = 0,
-    const std::function<bool(uint32_t, uint32_t)>& excluded = {});
+    const std::function<bool(uint32_t, uint32_t)>& excluded = {}, const StopFlag* stop = nullptr);
 
 } // namespace texsyn::detail

@@ -20,7 +20,7 @@ constexpr size_t kListBlock = 256;
 
 std::vector<uint32_t> similar_lists(const KdTreeIndex& index, size_t k, size_t candidates,
     float eps, int nthreads, size_t excluded_count,
-    const std::function<bool(uint32_t, uint32_t)>& excluded)
+    const std::function<bool(uint32_t, uint32_t)>& excluded, const StopFlag* stop)
 {
     const VectorSet& set = index.vectors();
     std::vector<uint32_t> lists(set.count * k);
@@ -31,6 +31,8 @@ std::vector<uint32_t> similar_lists(const KdTreeIndex& index, size_t k, size_t c
     OIIO::parallel_for(
         int64_t(0), int64_t(blocks),
         [&](int64_t b) {
+            if (stop_requested(stop))
+                return;
             std::vector<uint32_t> found(pool);
             std::vector<float> reduced(pool);
             std::vector<std::pair<float, uint32_t>> ranked;

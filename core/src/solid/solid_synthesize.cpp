@@ -66,12 +66,15 @@ bool make_plan(
 // The 3-D Laplacian solid of one iteration: `image`'s bands matched to the sample's 2-D
 // Laplacian bands (same names, same units), collapsed into `out`.
 void laplacian_solid(const Volume& image, const VolumePyramid& pyramid,
-    const std::vector<QuantileTable>& tables, HistogramMode mode, int nthreads, Volume& out)
+    const std::vector<QuantileTable>& tables, HistogramMode mode, int nthreads,
+    const StopFlag* stop, Volume& out)
 {
     std::vector<Volume> bands;
     pyramid.build(image, bands, nthreads);
-    for (size_t b = 0; b < bands.size(); ++b)
+    for (size_t b = 0; b < bands.size(); ++b) {
+        detail::throw_if_stopped(stop);
         match_histogram(bands[b].voxels(), tables[b], mode, nthreads);
+    }
     pyramid.collapse(bands, out, nthreads);
 }
 
@@ -83,11 +86,14 @@ void laplacian_solid(const Volume& image, const VolumePyramid& pyramid,
 // one-voxel-thin streaks along the axes in the other slices. One slice per task; slices of
 // one axis are disjoint, so the sum does not depend on threads.
 void add_steerable_solid(const Volume& image, SliceAxis axis, const Pyramid& pyramid,
-    const std::vector<QuantileTable>& tables, HistogramMode mode, int nthreads, Volume& sum)
+    const std::vector<QuantileTable>& tables, HistogramMode mode, int nthreads,
+    const StopFlag* stop, Volume& sum)
 {
     OIIO::parallel_for_chunked(
         int64_t(0), int64_t(slice_count(image, axis)), int64_t(1),
         [&](int64_t i, int64_t) {
+            if (stop_requested(stop))
+                return;
             Plane slice;
             std::vector<Plane> bands;
             extract_slice(image, axis, int(i), slice);
@@ -110,11 +116,14 @@ void match_solid(Volume& image, const ComponentTables& t, const SolidPlan& plan,
     match_histogram(image.voxels(), t.pixels, opt.histogram, opt.nthreads);
     Volume next;
     for (int it = 0; it < opt.iterations; ++it) {
-        laplacian_solid(image, *plan.laplacian, t.laplacian, opt.histogram, opt.nthreads, next);
+        laplacian_solid(
+            image, *plan.laplacian, t.laplacian, opt.histogram, opt.nthreads, opt.stop, next);
         if (t.steerable) {
-            for (int a = 0; a < 3; ++a)
+            for (int a = 0; a < 3; ++a) {
                 add_steerable_solid(image, kAxes[a], *plan.steerable[a], *t.steerable,
-                    opt.histogram, opt.nthreads, next);
+                    opt.histogram, opt.nthreads, opt.stop, next);
+                detail::throw_if_stopped(opt.stop);
+            }
             // The average of the four solids (the histogram match below sets the contrast).
             float* v = next.data();
             for (size_t i = 0; i < next.size(); ++i)
@@ -188,9 +197,8 @@ bool synthesize(
             continue;
         }
         auto iteration_done = [&](int it) {
-            if (opt.progress)
-                opt.progress(
-                    float(c * opt.iterations + it) / float(std::max(1, nc * opt.iterations)));
+            detail::report_progress(opt.progress, opt.stop,
+                float(c * opt.iterations + it) / float(std::max(1, nc * opt.iterations)));
         };
         Volume image(detail::seeded_noise(w, h * d, opt.seed, uint64_t(c)), h, d);
         const ComponentTables tables { comp.pixels, comp.bands,
