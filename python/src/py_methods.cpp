@@ -555,15 +555,14 @@ py::object run_call(Call& call)
     settings.seed = call.seed;
     settings.nthreads = call.threads;
     settings.progress = control.progress();
+    settings.stop = control.stop();
     settings.source_map = synthesizes_materials(m);
     settings.subbands = call.subbands;
     ReadInputs r;
     MethodResult result;
     ErrorKind kind = ErrorKind::Runtime;
-    bool ok;
-    {
-        py::gil_scoped_release release;
-        ok = read_call_inputs(call, file_options, r, kind, error);
+    const bool ok = control.run([&] {
+        bool ok = read_call_inputs(call, file_options, r, kind, error);
         // Options that cannot apply to these inputs are bad options, found before the run.
         if (ok && !material
             && (m.output == MethodOutput::Image || m.output == MethodOutput::Volume)) {
@@ -580,7 +579,8 @@ py::object run_call(Call& call)
                           : run_method(m, call.options, r.inputs, r.files, settings, result, error);
             kind = control.failure_kind();
         }
-    }
+        return ok;
+    });
     control.raise_if_stopped();
     if (!ok)
         raise_error(kind, call.function + ": " + error);

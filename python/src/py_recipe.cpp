@@ -71,13 +71,11 @@ py::object run(const Recipe& recipe, py::object threads, py::object progress)
     RunSettings settings;
     settings.nthreads = threads_keyword(threads);
     settings.progress = control.progress();
+    settings.stop = control.stop();
     OIIO::ImageBuf image;
     std::string error;
-    bool ok;
-    {
-        py::gil_scoped_release release;
-        ok = run_recipe(recipe, image, nullptr, error, settings);
-    }
+    const bool ok
+        = control.run([&] { return run_recipe(recipe, image, nullptr, error, settings); });
     control.raise_if_stopped();
     if (!ok) // before any progress: a recipe that cannot run as written (a sample missing too)
         raise_error(control.failure_kind(), error);

@@ -2,7 +2,9 @@
 #include "py_run.h"
 
 #include <chrono>
+#include <exception>
 #include <stdexcept>
+#include <thread>
 
 #include <texsyn/methods.h>
 
@@ -63,27 +65,80 @@ std::function<void(float)> RunControl::progress()
 {
     return [this](float fraction) {
         m_progressed = true;
-        if (m_stopped)
-            throw std::runtime_error("stopped");
-        // Taking the GIL waits for the Python thread that holds it to let go (up to the
-        // interpreter's switch interval, 5 ms): a busy thread beside a run of many short
-        // steps would slow it several times over. Python is asked at most every
-        // python_interval, and at the end.
         const auto now = std::chrono::steady_clock::now();
-        if (fraction < 1.0f && now - m_asked < python_interval)
+        if (fraction < 1.0f && m_handed && now - m_handed_at < python_interval)
             return;
-        m_asked = now;
-        py::gil_scoped_acquire gil;
-        try {
-            if (PyErr_CheckSignals() != 0)
-                throw py::error_already_set();
-            if (m_callback)
-                m_callback(fraction);
-        } catch (py::error_already_set& e) {
-            m_stopped = std::make_unique<py::error_already_set>(std::move(e));
-            throw std::runtime_error("stopped from Python");
-        }
+        m_handed = true;
+        m_handed_at = now;
+        std::unique_lock<std::mutex> lock(m_mutex);
+        m_step = fraction;
+        m_step_pending = true;
+        m_wake.notify_all();
+        m_wake.wait(lock, [this] { return !m_step_pending || m_stop; });
     };
+}
+
+void RunControl::look_at_python(bool step, float fraction)
+{
+    if (m_stop)
+        return; // stopped: nothing more is asked of Python
+    py::gil_scoped_acquire gil;
+    try {
+        if (PyErr_CheckSignals() != 0)
+            throw py::error_already_set();
+        if (step && m_callback)
+            m_callback(fraction);
+    } catch (py::error_already_set& e) {
+        m_stopped = std::make_unique<py::error_already_set>(std::move(e));
+        m_stop = true;
+    }
+}
+
+bool RunControl::run(const std::function<bool()>& work)
+{
+    bool ok = false;
+    std::exception_ptr failure;
+    std::thread worker([&] {
+        try {
+            ok = work();
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_done = true;
+        m_wake.notify_all();
+    });
+    try {
+        py::gil_scoped_release release;
+        std::unique_lock<std::mutex> lock(m_mutex);
+        while (!m_done) {
+            m_wake.wait_for(lock, python_interval, [this] { return m_done || m_step_pending; });
+            if (m_done)
+                break;
+            const bool step = m_step_pending;
+            const float fraction = m_step;
+            lock.unlock();
+            look_at_python(step, fraction);
+            lock.lock();
+            if (step) {
+                m_step_pending = false;
+                m_wake.notify_all();
+            }
+        }
+    } catch (...) { // (taking the GIL or a lock failed) the run must not outlive this frame
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_stop = true;
+            m_wake.notify_all();
+        }
+        py::gil_scoped_release release;
+        worker.join();
+        throw;
+    }
+    worker.join();
+    if (failure)
+        std::rethrow_exception(failure);
+    return ok;
 }
 
 void RunControl::raise_if_stopped()

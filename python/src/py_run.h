@@ -1,14 +1,19 @@
 // SPDX-License-Identifier: Apache-2.0
-// Library work run from Python: its seed= and threads=, run without the GIL, with progress
-// reported to a Python callable, and stopped by Ctrl-C.
+// Library work run from Python: its seed= and threads=, run on a thread of its own without
+// the GIL, with progress reported to a Python callable and stopped by Ctrl-C.
 #pragma once
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 
 #include <pybind11/pybind11.h>
+
+#include <texsyn/stop.h>
 
 #include "py_errors.h"
 
@@ -21,8 +26,8 @@ uint64_t seed_keyword(pybind11::handle value);
 /// ValueError otherwise.
 int threads_keyword(pybind11::handle value);
 
-/// One run's link to Python. Construct with the GIL held; call progress() from the thread
-/// that made it, without the GIL (RunSettings::progress).
+/// One run's link to Python. Construct with the GIL held, give the run progress() and
+/// stop() (RunSettings), and start it with run().
 class RunControl {
 public:
     /// `callback`: None, or a callable taking the fraction done (0..1).
@@ -31,14 +36,26 @@ public:
     RunControl(const RunControl&) = delete;
     RunControl& operator=(const RunControl&) = delete;
 
-    /// How often, at most, progress() takes the GIL (besides the last step, 1.0).
+    /// How often the calling thread looks at Python while a run works: it runs Python's
+    /// signal handlers (Ctrl-C raises KeyboardInterrupt there) this often, and hands the
+    /// callback a step at most this often (besides the first and the last).
     static constexpr std::chrono::milliseconds python_interval { 50 };
 
-    /// The RunSettings::progress of the run: at most every python_interval, and at the
-    /// end, takes the GIL, runs Python's signal handlers (Ctrl-C raises KeyboardInterrupt
-    /// there) and the callback; if either raises, keeps that exception and throws to stop
-    /// the run.
+    /// Runs `work` (library calls with progress() and stop(), no Python) on a thread of
+    /// its own while the calling thread releases the GIL and looks at Python every
+    /// python_interval. If a signal handler or the callback raises, keeps that exception
+    /// and sets stop(): the library then ends the run within about a second. Call with
+    /// the GIL held; returns work's result (a C++ exception from it is rethrown here),
+    /// then raise_if_stopped().
+    bool run(const std::function<bool()>& work);
+
+    /// The run's RunSettings::progress: records the fraction done; at the first step, then
+    /// at most every python_interval, and at the end (1.0), waits for the calling thread
+    /// to give it to the callback, as a synchronous call would.
     std::function<void(float)> progress();
+
+    /// The run's RunSettings::stop: set once Python raised.
+    const StopFlag* stop() const { return &m_stop; }
 
     /// With the GIL held, after a run: re-raises the Python exception that stopped it, if
     /// one did (else returns).
@@ -50,10 +67,24 @@ public:
     ErrorKind failure_kind() const { return m_progressed ? ErrorKind::Runtime : ErrorKind::Value; }
 
 private:
+    // With the GIL released, on the calling thread: takes it, runs the signal handlers and,
+    // for a step, the callback; an exception sets m_stop.
+    void look_at_python(bool step, float fraction);
+
     pybind11::object m_callback;
     std::unique_ptr<pybind11::error_already_set> m_stopped;
-    bool m_progressed = false;                     ///< progress() was called (on the run's thread)
-    std::chrono::steady_clock::time_point m_asked; ///< when progress() last took the GIL
+    StopFlag m_stop { false };
+    std::atomic<bool> m_progressed { false }; ///< progress() was called
+
+    // The hand-over of a step from the run's thread to the calling thread.
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
+    bool m_done = false;         ///< the run's thread has finished
+    bool m_step_pending = false; ///< m_step waits for the callback
+    float m_step = 0.0f;
+    // The run's thread's own: when it last handed a step over.
+    bool m_handed = false;
+    std::chrono::steady_clock::time_point m_handed_at;
 };
 
 } // namespace texsyn::python

@@ -16,9 +16,18 @@ import pytest
 
 import texsyn
 
-# A run long enough to interrupt (several seconds), with progress steps far shorter than
-# a second: choosy reports every few rows.
-LONG_RUN = "texsyn.choosy(sample, size=(1024, 1024), levels=3, progress=progress, threads=2)"
+# Runs long enough to interrupt (several seconds), each signalled once its progress passes
+# a fraction: choosy reports every few rows; a 2048² pyramid steps once per iteration and
+# colour component (each step a second or more of band transforms, which it stops
+# between bands); a 2048² patch synthesis at 0.6 is in its finest level, whose searches
+# and votes take seconds and stop between rows.
+LONG_RUNS = {
+    "choosy": ("texsyn.choosy(sample, size=(1024, 1024), levels=3, progress=progress, "
+               "threads=2)", 0.0),
+    "pyramid": ("texsyn.pyramid(sample, size=(2048, 2048), progress=progress, threads=2)",
+                0.1),
+    "patch": ("texsyn.patch(sample, size=(2048, 2048), progress=progress, threads=2)", 0.6),
+}
 
 
 def test_seed_and_threads_take_what_the_tool_takes(cli):
@@ -126,9 +135,11 @@ def test_an_exception_in_the_callback_stops_the_run_and_propagates(stucco):
     assert texsyn.pyramid(stucco, size=(32, 32), iterations=1).shape == (32, 32, 3)
 
 
-def test_ctrl_c_stops_a_run_within_a_second_or_two(tmp_path, samples):
+@pytest.mark.parametrize("method", sorted(LONG_RUNS))
+def test_ctrl_c_stops_a_run_within_about_a_second(tmp_path, samples, method):
     """A child Python process in a long synthesis gets SIGINT: it ends in KeyboardInterrupt
     soon after, before writing its result."""
+    long_run, fraction = LONG_RUNS[method]
     script = tmp_path / "long_run.py"
     script.write_text(textwrap.dedent(f"""\
         import signal
@@ -141,10 +152,10 @@ def test_ctrl_c_stops_a_run_within_a_second_or_two(tmp_path, samples):
         sample = oiio.ImageBuf({str(samples["stucco.png"])!r}).get_pixels(oiio.FLOAT)
         started = []
         def progress(fraction):
-            if not started:
+            if not started and fraction >= {fraction}:
                 started.append(fraction)
                 print("running", flush=True)
-        result = {LONG_RUN}
+        result = {long_run}
         np.save(sys.argv[1], result[0])
         """))
     out = tmp_path / "result.npy"
@@ -152,7 +163,7 @@ def test_ctrl_c_stops_a_run_within_a_second_or_two(tmp_path, samples):
                              stderr=subprocess.PIPE, text=True, env=os.environ.copy())
     try:
         assert child.stdout.readline() == "running\n", child.stderr.read()
-        time.sleep(0.2)  # well into the run
+        time.sleep(0.2)  # into the step after the one reported
         sent = time.monotonic()
         child.send_signal(signal.SIGINT)
         child.wait(timeout=30)
@@ -163,7 +174,8 @@ def test_ctrl_c_stops_a_run_within_a_second_or_two(tmp_path, samples):
     stderr = child.stderr.read()
     assert stderr.rstrip().endswith("KeyboardInterrupt"), stderr
     assert child.returncode != 0
-    assert stopped_after < 2.0, stopped_after
+    # About a second, with room for a busy machine (and the child's own exit).
+    assert stopped_after < 1.5, stopped_after
     assert not out.exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["long_run.py"]
 
