@@ -11,6 +11,7 @@
 #include <malloc.h>
 #include <vector>
 
+#include <Eigen/Core>
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <gtest/gtest.h>
@@ -177,6 +178,30 @@ TEST(Pca, KeepsTheRequestedVarianceFraction)
     for (size_t j = 1; j < pca.variances().size(); ++j)
         EXPECT_GE(pca.variances()[j - 1], pca.variances()[j]);
     EXPECT_NEAR(pca.variances()[0], 64.0 / 3.0, 0.1 * 64.0 / 3.0); // 3000 draws: ~3% error
+}
+
+// The components, and so every kd-tree search, are the same on every machine: nothing in
+// them depends on the cache sizes Eigen reads off the CPU to block its products (the
+// covariance used to: a CPU with other caches summed it in other blocks).
+TEST(Pca, TheSameComponentsWhateverTheCpuCaches)
+{
+    const int dim = 150;
+    const std::vector<float> data = random_vectors(6000, dim, 5);
+    const VectorSet set { data.data(), 6000, dim };
+    auto projections = [&] {
+        const detail::PcaProjection pca(set, 8, 0.95);
+        std::vector<float> out(size_t(pca.output_dim()) * 50);
+        for (size_t i = 0; i < 50; ++i)
+            pca.project(set.row(i * 97), out.data() + i * size_t(pca.output_dim()));
+        return out;
+    };
+    const std::vector<float> here = projections();
+    const std::ptrdiff_t l1 = Eigen::l1CacheSize(), l2 = Eigen::l2CacheSize(),
+                         l3 = Eigen::l3CacheSize();
+    Eigen::setCpuCacheSizes(4096, 32768, 262144); // a small, old CPU
+    const std::vector<float> small = projections();
+    Eigen::setCpuCacheSizes(l1, l2, l3);
+    EXPECT_EQ(small, here);
 }
 
 TEST(Pca, KeepsTheRequestedDimsAndPreservesDistancesWithAll)

@@ -238,7 +238,8 @@ TEST(SurfaceBoundary, OwnColourOfABoundaryFaceDoesNotSteerItsChoice)
 // An empty slot of a closed mesh is an irregular vertex, not a boundary: it keeps the
 // face's own value and the sphere's colours are those recorded before wildcards existed
 // (sphere.obj as it is, 2 levels, seed 17: kd-trees with pebbles 48x48, exhaustive search
-// with pebbles 32x32).
+// with pebbles 32x32). The kd-tree colours were recorded again when the PCA's covariance
+// stopped depending on the CPU's cache sizes (the exhaustive ones did not change).
 TEST(SurfaceBoundary, ClosedMeshUnchanged)
 {
     const FaceLevel sphere = bundled_level("sphere.obj", false);
@@ -250,7 +251,7 @@ TEST(SurfaceBoundary, ClosedMeshUnchanged)
         EXPECT_FALSE(one.target->wildcards(site, mask.data())) << site;
     }
     EXPECT_GT(empty, 0u);
-    EXPECT_EQ(fnv1a(grow(sphere, pebbles(48), 2, 17, 2).colours), 0x385697836a8f5681ull);
+    EXPECT_EQ(fnv1a(grow(sphere, pebbles(48), 2, 17, 2).colours), 0xfa44d86b14190ba3ull);
     EXPECT_EQ(fnv1a(grow(sphere, pebbles(32), 2, 17, 2, ChoosySearch::Exhaustive).colours),
         0x26beae007089bb01ull);
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // PcaProjection (pca_pvt.h): covariance of a strided subsample, Eigen's self-adjoint
-// eigen-solver, components kept as float rows for a vectorisable projection.
+// eigen-solver, components kept as float rows for a vectorisable projection. The same
+// components on every machine: nothing here depends on the CPU's cache sizes.
 #include "pca_pvt.h"
 
 #include <algorithm>
@@ -11,17 +12,25 @@ namespace texsyn::detail {
 
 namespace {
 
-// a . b in eight interleaved lanes (the loop vectorises), then added pairwise.
-float dot(const float* a, const float* b, int n)
+// a . b summed in `Lanes` interleaved lanes (the loop vectorises), then lane l with lane
+// l + Lanes / 2 and neighbours pairwise: a fixed order, whatever the machine.
+template <class T, size_t Lanes>
+T lane_dot(const T* a, const T* b, size_t n)
 {
-    float acc[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
-    int i = 0;
-    for (; i + 8 <= n; i += 8)
-        for (int l = 0; l < 8; ++l)
+    T acc[Lanes] = {};
+    size_t i = 0;
+    for (; i + Lanes <= n; i += Lanes)
+        for (size_t l = 0; l < Lanes; ++l)
             acc[l] += a[i + l] * b[i + l];
-    for (int l = 0; i + l < n; ++l)
+    for (size_t l = 0; i + l < n; ++l)
         acc[l] += a[i + l] * b[i + l];
-    return ((acc[0] + acc[4]) + (acc[1] + acc[5])) + ((acc[2] + acc[6]) + (acc[3] + acc[7]));
+    T pair[Lanes / 2];
+    for (size_t l = 0; l < Lanes / 2; ++l)
+        pair[l] = acc[l] + acc[l + Lanes / 2];
+    for (size_t w = Lanes / 2; w > 1; w /= 2)
+        for (size_t l = 0; l < w / 2; ++l)
+            pair[l] = pair[2 * l] + pair[2 * l + 1];
+    return pair[0];
 }
 
 } // namespace
@@ -38,12 +47,20 @@ PcaProjection::PcaProjection(const VectorSet& vectors, int dims, double fraction
             = Eigen::Map<const Eigen::RowVectorXf>(vectors.row(s * vectors.count / samples), dim);
     const Eigen::RowVectorXd mean = x.cast<double>().colwise().mean();
     x.rowwise() -= mean.cast<float>();
-    // Centred float data: rounding stays far below the variances that decide the ranking.
-    Eigen::MatrixXf covariance = Eigen::MatrixXf::Zero(dim, dim);
-    covariance.selfadjointView<Eigen::Lower>().rankUpdate(x.transpose(), 1.0f / float(samples));
+    // The covariance of the centred data, summed sample by sample in double. Not Eigen's
+    // product (rankUpdate): it splits the sum into blocks sized by the CPU's caches, so the
+    // components, and every kd-tree search after them, would differ between machines.
+    const Eigen::MatrixXd centred = x.cast<double>();
     x.resize(0, 0);
+    Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(dim, dim);
+    for (Eigen::Index j = 0; j < dim; ++j)
+        for (Eigen::Index i = j; i < dim; ++i) {
+            const double sum
+                = lane_dot<double, 4>(centred.col(i).data(), centred.col(j).data(), samples);
+            covariance(i, j) = covariance(j, i) = sum / double(samples);
+        }
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-        covariance.cast<double>(), Eigen::ComputeEigenvectors);
+        covariance, Eigen::ComputeEigenvectors);
     // Eigen returns eigenvalues in increasing order: component j is column dim - 1 - j.
     m_variances.resize(size_t(dim));
     double total = 0.0;
@@ -85,7 +102,8 @@ void PcaProjection::project(const float* v, float* out) const
 {
     for (int j = 0; j < m_out; ++j)
         out[j]
-            = dot(m_components.data() + size_t(j) * size_t(m_dim), v, m_dim) - m_offsets[size_t(j)];
+            = lane_dot<float, 8>(m_components.data() + size_t(j) * size_t(m_dim), v, size_t(m_dim))
+            - m_offsets[size_t(j)];
 }
 
 size_t PcaProjection::memory_bytes() const
