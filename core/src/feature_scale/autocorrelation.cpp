@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: Apache-2.0
+// The autocorrelation along the axes (by FFT, zero-padded so that it is linear) and the
+// period it shows.
+#include "feature_scale_pvt.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include <texsyn/fft.h>
+
+namespace texsyn::detail {
+
+namespace {
+
+// A peak counts if it rises this much above the lowest value before it (a ripple of a
+// stochastic texture's autocorrelation rises far less)…
+constexpr double kMinProminence = 0.2;
+// …and is at least this high.
+constexpr double kMinPeak = 0.1;
+// The period is the first peak at least this fraction of the highest: a running bond's
+// half-period peak (one course, bricks offset) is lower than its full period's.
+constexpr double kPeakShare = 0.8;
+
+} // namespace
+
+void axis_autocorrelation(
+    const Plane& plane, int nthreads, std::vector<double>& along_x, std::vector<double>& along_y)
+{
+    const int w = plane.width(), h = plane.height();
+    const int pw = 2 * w, ph = 2 * h;
+    std::string error;
+    const auto fft = RealFft2D::create(pw, ph, FftBackend::Kiss, error);
+    std::vector<float> padded(size_t(pw) * size_t(ph), 0.0f);
+    double mean = 0.0;
+    for (size_t i = 0; i < plane.size(); ++i)
+        mean += plane.data()[i];
+    mean /= double(plane.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            padded[size_t(y) * size_t(pw) + size_t(x)] = float(plane(x, y) - mean);
+    std::vector<std::complex<float>> spectrum(fft->spectrum_size());
+    fft->forward(padded.data(), spectrum.data(), nthreads);
+    for (auto& c : spectrum)
+        c = std::norm(c);
+    fft->inverse(spectrum.data(), padded.data(), nthreads);
+    // padded(dx, dy) (indices mod the padded size) is now the sum of products at that shift.
+    auto at = [&](int dx, int dy) {
+        const int x = (dx + pw) % pw, y = (dy + ph) % ph;
+        const double count = double(w - std::abs(dx)) * double(h - std::abs(dy));
+        return double(padded[size_t(y) * size_t(pw) + size_t(x)]) / count;
+    };
+    const double zero = at(0, 0);
+    along_x.assign(size_t(w / 2 + 1), 0.0);
+    along_y.assign(size_t(h / 2 + 1), 0.0);
+    if (!(zero > 0.0))
+        return;
+    for (int d = 0; d <= w / 2; ++d)
+        along_x[size_t(d)] = (at(d, -1) + at(d, 0) + at(d, 1)) / (3.0 * zero);
+    for (int d = 0; d <= h / 2; ++d)
+        along_y[size_t(d)] = (at(-1, d) + at(0, d) + at(1, d)) / (3.0 * zero);
+    along_x[0] = along_y[0] = 1.0;
+}
+
+double profile_period(const std::vector<double>& r, double& strength)
+{
+    struct Peak {
+        double at, value;
+    };
+    std::vector<Peak> peaks;
+    double low = r.empty() ? 0.0 : r[0];
+    for (size_t d = 1; d + 1 < r.size(); ++d) {
+        low = std::min(low, r[d]);
+        if (!(r[d] > r[d - 1] && r[d] >= r[d + 1]) || r[d] - low < kMinProminence
+            || r[d] < kMinPeak)
+            continue;
+        // The vertex of the parabola through the three values around the peak.
+        const double curve = r[d - 1] - 2.0 * r[d] + r[d + 1];
+        const double offset
+            = curve < 0.0 ? std::clamp(0.5 * (r[d - 1] - r[d + 1]) / curve, -0.5, 0.5) : 0.0;
+        peaks.push_back({ double(d) + offset, r[d] });
+    }
+    strength = 0.0;
+    double highest = 0.0;
+    for (const Peak& p : peaks)
+        highest = std::max(highest, p.value);
+    for (const Peak& p : peaks)
+        if (p.value >= kPeakShare * highest) {
+            strength = p.value;
+            return p.at;
+        }
+    return 0.0;
+}
+
+} // namespace texsyn::detail
