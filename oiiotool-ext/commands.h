@@ -19,11 +19,13 @@ void push_input(CliState& state, const std::string& filename);
 /// Declares the colour space of the input on top of the stack and re-linearises it.
 void reinterpret_input(CliState& state, const std::string& colorspace);
 
-/// `--NAME[:modifiers]` of registry row `method` with its parsed `options`: pops its inputs,
-/// runs it (progress as progress_meter.h says, a timing line with -v), pushes its result (a
-/// report is printed and its input stays), and writes the files its output-file options
-/// name.
-void run_method_command(CliState& state, const Method& method, const MethodOptions& options);
+/// `--NAME[:modifiers]` of registry row `method` with its parsed `options` (`modifiers` as
+/// typed): pops its inputs, runs it (progress as progress_meter.h says, a timing line with
+/// -v), prints its warnings (but those about an option the modifiers set), pushes its
+/// result (a report is printed and its input stays), and writes the files its output-file
+/// options name.
+void run_method_command(CliState& state, const Method& method, const MethodOptions& options,
+    const std::string& modifiers);
 
 /// Writes the top item for `filename`: an image in the colour space and pixel type of the
 /// policy in docs/colour.md (with --subbands the multi-part inspection EXR), an analysis

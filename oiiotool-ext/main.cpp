@@ -58,8 +58,8 @@ size_t run_argument(CliState& state, const std::vector<std::string>& args, size_
     } else if (is_flag(a)) {
         return i;
     } else if (!a.empty() && a[0] == '-') {
-        run_method_command(
-            state, *find_method(split_command(a).first.substr(2)), state.options.at(i));
+        const auto [command, modifiers] = split_command(a);
+        run_method_command(state, *find_method(command.substr(2)), state.options.at(i), modifiers);
     } else {
         push_input(state, a);
     }

@@ -113,7 +113,8 @@ void write_option_file(CliState& state, const std::string& command, const std::s
 
 } // namespace
 
-void run_method_command(CliState& state, const Method& m, const MethodOptions& options)
+void run_method_command(
+    CliState& state, const Method& m, const MethodOptions& options, const std::string& modifiers)
 {
     const std::string command = "--" + m.name;
     std::vector<StackItem> inputs
@@ -159,6 +160,11 @@ void run_method_command(CliState& state, const Method& m, const MethodOptions& o
         const bool names_input
             = error.find("sample") != std::string::npos || error.find("image") != std::string::npos;
         throw CliError(command + " : " + error + (names_input ? legend(m, inputs) : ""));
+    }
+    for (const RunWarning& w : result.warnings) {
+        const std::string set = w.option + "=";
+        if (modifiers.rfind(set, 0) != 0 && modifiers.find(":" + set) == std::string::npos)
+            std::fprintf(stderr, "texsyn WARNING: %s : %s\n", command.c_str(), w.text.c_str());
     }
     if (m.output == MethodOutput::Report) {
         std::fputs(result.report.c_str(), stdout);

@@ -253,7 +253,8 @@ struct Call {
     int threads = 0;
     py::object progress = py::none();
     std::string tocolorspace;
-    bool subbands = false; ///< give the pyramid's subbands too (rows that have them)
+    bool subbands = false;          ///< give the pyramid's subbands too (rows that have them)
+    std::vector<std::string> given; ///< the options the keywords set (their warnings are left out)
 };
 
 py::object run_call(Call& call);
@@ -346,7 +347,7 @@ void read_keywords(Call& call, py::dict kwargs)
                 if (keyword_of(field.name) == k)
                     f = &field;
             if (!f || f->type == OptionType::OutputFile) {
-                const std::string near = closest_name(k, known);
+                const std::string near = f ? std::string() : closest_name(k, known);
                 raise_error(ErrorKind::Value,
                     call.function + ": unknown keyword '" + k + "'"
                         + (near.empty() ? "" : ", did you mean '" + near + "'?")
@@ -366,6 +367,7 @@ void read_keywords(Call& call, py::dict kwargs)
                 : option_text(*f, k, value);
             if (!call.options.set(f->name, text, error))
                 raise_error(ErrorKind::Value, error);
+            call.given.push_back(f->name);
         }
     }
     call.colors = colour_config(colorconfig);
@@ -584,6 +586,11 @@ py::object run_call(Call& call)
     control.raise_if_stopped();
     if (!ok)
         raise_error(kind, call.function + ": " + error);
+    for (const RunWarning& w : result.warnings)
+        if (std::find(call.given.begin(), call.given.end(), w.option) == call.given.end())
+            py::module_::import("warnings")
+                .attr("warn")(call.function + ": " + w.text,
+                    py::module_::import("builtins").attr("UserWarning"), 2);
 
     const ColourOutput out = result_output(call, r);
     switch (m.output) {

@@ -733,7 +733,7 @@ TEST_F(Cli, SolidTexturesAreWrittenAsVdbAndAsSliceExr)
     EXPECT_EQ(parts, 16);
     EXPECT_EQ(in->spec(0, 0).get_string_attribute("synth:options"),
         "size=32x24x16:iterations=1:pyramid=combined:scales=1:orientations=4:histogram=exact:"
-        "fft=kiss");
+        "fft=kiss:flatten=0");
 }
 
 TEST_F(Cli, BadSolidRequestsAreRefused)

@@ -23,9 +23,11 @@ TEST_F(Cli, PatchWritesTheImageItsSourceMapAndAReport)
     EXPECT_EQ(exr.nchannels(), 3);
     EXPECT_EQ(exr.spec().get_string_attribute("synth:method"), "patch");
     const std::string options = exr.spec().get_string_attribute("synth:options");
-    EXPECT_EQ(options.find("size=96x80:levels=3:patch=11,7:iterations=1,2,4:"), 0u) << options;
-    // -v: what the result copies.
-    EXPECT_NE(r.err.find("texsyn: --patch used "), std::string::npos) << r.err;
+    EXPECT_EQ(options.find("size=96x80:levels=3:patch=11,7:iterations=1,3,8:"), 0u) << options;
+    // -v: the feature scale, how the levels were chosen, what the result copies.
+    EXPECT_NE(r.err.find("texsyn: --patch feature size "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" px; 3 levels, the coarsest with features of "), std::string::npos)
+        << r.err;
     EXPECT_NE(r.err.find("% of the sample; largest verbatim copy "), std::string::npos) << r.err;
     // Every output pixel is the sample pixel the map names.
     expect_source_map("coords.exr", "out.png", "stucco.png", "patch");
@@ -98,8 +100,10 @@ TEST_F(Cli, BadPatchRequestsAreRefused)
     expect_failure("stucco.png --patch:levels=5 -o out.exr",
         "texsyn ERROR: --patch : levels=5 is too many for a 128x128 sample and a 128x128 "
         "output: level 4 would be smaller than its 11-pixel patch (use levels=4 or less)");
-    expect_failure("stucco.png --patch:size=6x100 -o out.exr",
+    expect_failure("stucco.png --patch:size=6x100:patch=11,7 -o out.exr",
         "texsyn ERROR: --patch : size=6x100 is smaller than the 7-pixel patch");
+    expect_failure("stucco.png --patch:size=2x100 -o out.exr",
+        "texsyn ERROR: --patch : size=2x100 is smaller than the 3-pixel patch");
     expect_failure("stucco.png --patch:repetition=-1 -o out.exr",
         "texsyn ERROR: --patch : repetition=-1 : out of range 0..10");
     expect_failure("stucco.png --patch:vote=median -o out.exr",
@@ -115,10 +119,10 @@ TEST_F(Cli, BadPatchRequestsAreRefused)
         "texsyn ERROR: --patch : guide=missing.exr : no such file");
     expect_failure_starting("stucco.png --patch:size=60000x60000 -o out.exr",
         "texsyn ERROR: --patch : size=60000x60000 would need about ");
-    OIIO::ImageBuf tiny = OIIO::ImageBufAlgo::cut(read("stucco.png"), OIIO::ROI(0, 6, 0, 40));
+    OIIO::ImageBuf tiny = OIIO::ImageBufAlgo::cut(read("stucco.png"), OIIO::ROI(0, 2, 0, 40));
     ASSERT_TRUE(tiny.write((dir / "tiny.png").string(), OIIO::TypeUInt8));
     expect_failure("tiny.png --patch -o out.exr",
-        "texsyn ERROR: --patch : the sample (6x40) is smaller than the 7-pixel patch (give a "
+        "texsyn ERROR: --patch : the sample (2x40) is smaller than the 3-pixel patch (give a "
         "smaller patch=)",
         { "stucco.png", "tiny.png" });
     write_sample("nan.exr", 3, OIIO::TypeFloat, std::nanf(""));

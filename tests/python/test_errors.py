@@ -160,7 +160,7 @@ def test_a_constant_image_is_synthesized_as_constant():
     ("neighborhood", {}, "the sample (1x1) is smaller than the n=9 neighbourhood"),
     ("choosy", {}, "the sample (1x1) is smaller than the 5x5 neighbourhood"),
     ("pyramid", {}, "sample is 1x1: the pyramid method needs at least 16x16"),
-    ("patch", {}, "the sample (1x1) is smaller than the 7-pixel patch"),
+    ("patch", {}, "the sample (1x1) is smaller than the 3-pixel patch"),
 ])
 def test_too_small_samples_are_value_errors(method, options, message):
     tiny = np.full((1, 1, 3), 0.5, np.float32)

@@ -138,7 +138,7 @@ TEST(SolidSynthesis, OutputHasTheRequestedSizeChannelsAndMetadata)
     // 1 scale: the most that keeps a 16-voxel side's coarsest band at 8.
     EXPECT_EQ(v.attributes.get_string("synth:options"),
         "size=40x24x16:iterations=1:pyramid=combined:scales=1:orientations=4:histogram=exact:"
-        "fft=kiss");
+        "fft=kiss:flatten=0");
 }
 
 // The quality bar on a real sample: every axis's slices have the sample's
@@ -291,5 +291,5 @@ TEST(SolidOptions, TableParsesAndFormats)
     EXPECT_EQ(error, "pyramid=steerable : not one of combined|laplacian");
     EXPECT_EQ(SolidOptions::table().format(SolidOptions()),
         "size=0x0x0:iterations=5:pyramid=combined:scales=0:orientations=4:histogram=exact:"
-        "fft=kiss");
+        "fft=kiss:flatten=0");
 }

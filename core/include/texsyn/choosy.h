@@ -47,6 +47,9 @@ struct ChoosyOptions {
     /// grid (isotropic variants of anisotropic samples, §5); 0 (the default, unlike the
     /// paper's): the sample's orientation, so that wood grain or bricks keep their direction.
     int isotropic = 0;
+    /// 1: the sample's low-order lighting is divided out first (flatten_illumination,
+    /// homogeneity.h); the result copies the flattened sample's pixels.
+    int flatten = 0;
     ChoosySearch search = ChoosySearch::KdTree;
     int dims = 20; ///< kdtree: principal components kept (>= the vector size: all, exact)
     /// kdtree: nanoflann's approximation factor (0 = exact in PCA space). 30 was measured

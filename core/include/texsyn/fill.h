@@ -15,11 +15,21 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <texsyn/feature_scale.h>
 #include <texsyn/options.h>
 #include <texsyn/patch.h>
 #include <texsyn/stop.h>
 
 namespace texsyn {
+
+/// How a fill's copies meet the kept pixels at the mask's outline.
+enum class FillOutline {
+    /// Offset by a smooth membrane so that they meet them without a step (seamless cloning,
+    /// like a healing brush): on a soft plate the outline does not show.
+    Match,
+    /// Exact copies of known pixels, as the source map records them.
+    Copy,
+};
 
 /// Options of a fill.
 struct FillOptions {
@@ -27,10 +37,12 @@ struct FillOptions {
     /// most three of the largest patches at the coarsest level; at least 3 where the image
     /// is large enough).
     int levels = 0;
-    /// Patch sizes (odd), largest first, as PatchOptions::patch.
-    std::vector<int> patch = { 11, 7 };
-    /// EM iterations per patch size, per level, finest first, as PatchOptions::iterations.
-    std::vector<int> iterations = { 4, 6, 8 };
+    /// Patch sizes (odd), largest first, as PatchOptions::patch; empty = 11 and 7 (smaller
+    /// for an image under 33 pixels).
+    std::vector<int> patch;
+    /// EM iterations per patch size, per level, finest first, as PatchOptions::iterations;
+    /// empty = 4 at the finest level, 6 at the next, 8 at the coarser ones.
+    std::vector<int> iterations;
     /// Pixels around each hole's bounding box that patches come from; 0 = automatic (at
     /// least three of the largest patches at the coarsest level, and half the hole's larger
     /// side). Ignored with a separate sample, which gives every patch.
@@ -44,6 +56,7 @@ struct FillOptions {
     /// k of k-coherence, as PatchOptions::coherence.
     int coherence = 2;
     PatchVote vote = PatchVote::Robust;
+    FillOutline outline = FillOutline::Match;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.
@@ -78,10 +91,13 @@ struct FillReport {
 /// is refined by EM iterations: a PatchMatch search, for every patch over the hole, among
 /// the patches of known pixels (none touching `exclude` > 0, if given, nor the image's
 /// edge), then a vote in which only hole pixels change, so patches agree across the mask's
-/// edge. At the end every hole pixel copies, from the image (or sample) as given, all its
-/// channels at the pixel its patches voted for; a mask value m between 0 and 1 blends:
-/// (1 - m) x the image + m x the copy. Pixels where the mask is 0 are the image's,
-/// bit-identical; an empty mask returns the image unchanged.
+/// edge, and (but at the finest level) the filled pixels' histogram matched to the source
+/// pixels', so that a wide hole does not wash out. At the end every hole pixel copies,
+/// from the image (or sample) as given, all its channels at the pixel its patches voted
+/// for; with outline=match (the default) the copies are then offset by a smooth membrane
+/// that takes them to the kept pixels across the outline (compose_region); a mask value m
+/// between 0 and 1 blends: (1 - m) x the image + m x the fill. Pixels where the mask is 0
+/// are the image's, bit-identical; an empty mask returns the image unchanged.
 ///
 /// Fails (false, message in dst) on invalid options; an image, mask, exclude or sample that
 /// has an error, NaN or Inf; a mask or exclude that is not one channel of the image's size;
@@ -94,14 +110,34 @@ OIIO::ImageBuf texture_fill(const OIIO::ImageBuf& image, const OIIO::ImageBuf& m
     const FillOptions& opt, const OIIO::ImageBuf* sample = nullptr,
     const OIIO::ImageBuf* exclude = nullptr, FillReport* report = nullptr);
 
+/// The axes make_tileable() makes an image tile along.
+enum class TileAxes { Both, X, Y };
+
+/// The fill options make_tileable() starts from: FillOptions with outline=copy.
+inline FillOptions band_fill_defaults()
+{
+    FillOptions o;
+    o.outline = FillOutline::Copy;
+    return o;
+}
+
 /// Options of make_tileable().
 struct TileableOptions {
-    /// The fill of the band (its context is the whole image, so `context` is not used).
-    FillOptions options;
+    /// The fill of the band (its context is the whole image, so `context` is not used; nor
+    /// is its flatten: see `flatten` below). Its outline is copy by default: the band's
+    /// mask ramps into the kept pixels, which blends its edges, and copies stay exact.
+    FillOptions options = band_fill_defaults();
     /// Width in pixels of the band across each wrap-around seam that is re-synthesized;
     /// 0 = automatic: 3/16 of the image's shorter side, at least two of the largest
     /// patches. At most a third of the shorter side.
     int band = 0;
+    /// X: only the left and right edges are made to meet (a strip that repeats sideways,
+    /// as trim sheets do), Y: only the top and bottom, Both: both.
+    TileAxes axis = TileAxes::Both;
+    /// 1: the image's low-order lighting is divided out first (flatten_illumination): a
+    /// lit scan cannot tile, its dark side meeting its bright one. Pixels outside the band
+    /// are then the flattened image's.
+    int flatten = 0;
 
     /// The table behind `--tileable:name=value`, recipes, synth:options and the docs.
     static const OptionTable<TileableOptions>& table();
@@ -112,15 +148,22 @@ struct TileableOptions {
 
 /// What make_tileable() changed.
 struct TileableReport {
-    int band = 0;                  ///< the band's width in pixels (the automatic choice if 0)
-    double changed_fraction = 0.0; ///< fraction of the pixels whose value changed
+    int band = 0; ///< the band's width in pixels (the automatic choice if 0)
+    /// Fraction of the pixels whose value changed (from the flattened image, with flatten)
+    double changed_fraction = 0.0;
+    FeatureScale scale; ///< the image's feature scale
+    /// The band is narrower than half a feature (scale.size > 2 band): features crossing
+    /// the seams are cut short or smeared; a wider band= or a larger scan holds them.
+    bool band_too_narrow = false;
 };
 
-/// The image made to tile at its own size: the image is rolled by half its size so that
-/// its wrap-around seams cross in the middle, a band `opt.band` wide along them is filled
-/// (texture_fill) from the rest of the image, and the result is rolled back. Pixels outside
-/// the band (a frame away from the image's edges) are the image's, bit-identical; the result
-/// has no seam where it wraps around, and carries wrapmodes "periodic,periodic".
+/// The image made to tile at its own size: the image is rolled by half its size (along
+/// opt.axis) so that its wrap-around seams lie in the middle, a band `opt.band` wide along
+/// them is filled (texture_fill) from the rest of the image, and the result is rolled back.
+/// The band's mask ramps from 0 to 1 over a quarter of its width on each side, so that the
+/// fill blends into the kept pixels. Pixels outside the band (a frame away from the
+/// image's edges) are the image's (flattened, with opt.flatten), bit-identical; the result
+/// has no seam where it wraps around, and carries wrapmodes "periodic" along opt.axis.
 ///
 /// Fails (false, message in dst) as texture_fill() does, and on a band too wide for the
 /// image.

@@ -35,6 +35,18 @@ inline constexpr double homogeneity_max_local_mean_variation = 0.3;
 /// Above this coefficient of variation of the tile contrasts the sample is poor.
 inline constexpr double homogeneity_max_local_contrast_variation = 0.4;
 
+/// The methods that copy patches (neighborhood, choosy, patch, fill, tileable) re-tile a
+/// lighting ramp as light and dark blocks well below the pyramid's limit: above this
+/// amplitude, for a ramp that explains at least homogeneity_min_lighting_share of how the
+/// sample's regions differ, the sample is uneven for them (HomogeneityReport::
+/// uneven_for_copying).
+inline constexpr double homogeneity_max_lighting_for_copying = 0.3;
+inline constexpr double homogeneity_min_lighting_share = 0.35;
+/// Light scales a region's contrast with its mean, so with the lighting divided out the
+/// relative contrast of a lit sample is even: above this variation of it between regions
+/// (HomogeneityReport::lit_out_contrast_variation) the differences are the texture's own.
+inline constexpr double homogeneity_max_contrast_variation_of_lighting = 0.2;
+
 /// A report's score is below this exactly when one measure exceeds its threshold.
 inline constexpr double homogeneity_poor_score = 0.5;
 
@@ -66,6 +78,21 @@ struct HomogeneityReport {
     double illumination_planar_fraction = 0.0;
     /// e.g. "brighter towards the right (0 deg)", "darker towards the edges (vignette)".
     std::string illumination_description;
+    /// Share (0..1) of the variance of the means of 8x8 regions of the sample that the
+    /// fitted illumination explains: near 1 when regions differ because of the light, near
+    /// 0 when they differ because of the texture's own large features (which a quadratic
+    /// fit also follows, but cannot explain). 0 if the sample is under 16 px on a side.
+    double lighting_share = 0.0;
+    /// Coefficient of variation of the relative contrast (std-dev / mean) of the same 8x8
+    /// regions once the fitted illumination is divided out: low when only light made
+    /// them differ. 0 if the sample is under 16 px on a side.
+    double lit_out_contrast_variation = 0.0;
+    /// A lighting ramp the copying methods would re-tile (homogeneity_max_lighting_for_
+    /// copying): amplitude above the limit, mostly planar (a ramp, not a vignette that
+    /// large features mimic), explaining the regions' differences, and leaving their
+    /// relative contrast even once divided out (homogeneity_max_contrast_variation_of_
+    /// lighting).
+    bool uneven_for_copying = false;
 
     /// (b) Tile statistics of the luminance: square tiles of side max(8, min(w,h) / 4),
     /// as many as fit (4x4 on a square sample), centred; the leftover margin is unused.

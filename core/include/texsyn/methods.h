@@ -191,6 +191,14 @@ struct RunSettings {
     bool source_map = false;
 };
 
+/// Something a user should know about a run that succeeded (a front end shows it even when
+/// quiet): one line, and the option that would change it, so that a front end can leave it
+/// out when the user set that option.
+struct RunWarning {
+    std::string option; ///< e.g. "flatten"
+    std::string text;   ///< e.g. "bricks.png is unevenly lit (…): flatten=1 divides it out"
+};
+
 /// What a run gives (MethodOutput says which member).
 struct MethodResult {
     /// Image, Volume (spec.depth slices), or Mesh's bake; float, scene-linear
@@ -205,6 +213,9 @@ struct MethodResult {
     std::vector<std::pair<std::string, OIIO::ImageBuf>> files;
     /// What the run measured of its result, one line (the tool prints it with -v).
     std::string notes;
+    /// What the user should know: for a method with flatten=0, a sample whose lighting the
+    /// method would copy (check_homogeneity's uneven_for_copying, or its pyramid limit).
+    std::vector<RunWarning> warnings;
 };
 
 /// An input's layout, known from its file's header without decoding pixels (an analysis:
@@ -220,7 +231,19 @@ struct ResultLayout {
     int width = 0, height = 0;
     int depth = 1; ///< a volume's slices
     std::vector<std::string> channelnames;
-    bool tiles = true; ///< it wraps around seamlessly: written with wrapmodes "periodic"
+    /// It wraps around seamlessly along x, along y: written with wrapmodes "periodic" for
+    /// those axes ("black" for the others).
+    bool tiles_x = true, tiles_y = true;
+
+    /// Its OIIO "wrapmodes" attribute ("periodic,periodic" if it tiles), or "" if it
+    /// tiles along neither axis.
+    std::string wrapmodes() const
+    {
+        if (!tiles_x && !tiles_y)
+            return "";
+        return std::string(tiles_x ? "periodic" : "black") + "," + (tiles_y ? "periodic" : "black");
+    }
+    void set_tiles(bool both) { tiles_x = tiles_y = both; }
 };
 
 /// A row's layout rule: from the validated options and the inputs' layouts (checked for

@@ -62,6 +62,9 @@ struct NeighborhoodOptions {
     /// wrap-around seams with full square neighbourhoods (which see both sides), so the
     /// output tiles; 0: Wei & Levoy's single pass (its first rows and columns matched noise).
     int tile = 1;
+    /// 1: the sample's low-order lighting is divided out first (flatten_illumination,
+    /// homogeneity.h); the result copies the flattened sample's pixels.
+    int flatten = 0;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.

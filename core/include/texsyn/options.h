@@ -117,7 +117,7 @@ OptionField real_field(
 OptionField size_field(std::string name, int hi, std::string zero_means, std::string help,
     std::vector<MemberAccess<int>> sides);
 OptionField integers_field(std::string name, int lo, int hi, bool odd, size_t max_count,
-    std::string help, MemberAccess<std::vector<int>> member);
+    std::string empty_text, std::string help, MemberAccess<std::vector<int>> member);
 OptionField numbers_field(std::string name, float lo, float hi, size_t max_count,
     std::string empty_text, std::string help, MemberAccess<std::vector<float>> member);
 OptionField choice_field(std::string name, std::vector<std::string> names, std::string help,
@@ -175,16 +175,20 @@ public:
         return add(
             detail::size_field(name, hi, zero_means, help, { access(w), access(h), access(d) }));
     }
-    /// A non-empty list of up to `max_count` integers in [lo, hi], written "a,b,c".
+    /// A list of up to `max_count` integers in [lo, hi], written "a,b,c": non-empty, or
+    /// empty written and read as `empty_text` if that is given ("auto": the method
+    /// chooses).
     OptionTable& integers(const char* name, std::vector<int> T::*m, int lo, int hi,
-        size_t max_count, const char* help)
+        size_t max_count, const char* help, const char* empty_text = "")
     {
-        return add(detail::integers_field(name, lo, hi, false, max_count, help, access(m)));
+        return add(
+            detail::integers_field(name, lo, hi, false, max_count, empty_text, help, access(m)));
     }
     OptionTable& odd_integers(const char* name, std::vector<int> T::*m, int lo, int hi,
-        size_t max_count, const char* help)
+        size_t max_count, const char* help, const char* empty_text = "")
     {
-        return add(detail::integers_field(name, lo, hi, true, max_count, help, access(m)));
+        return add(
+            detail::integers_field(name, lo, hi, true, max_count, empty_text, help, access(m)));
     }
     /// A list of up to `max_count` numbers in [lo, hi], written "a,b,c"; an empty list is
     /// written and read as `empty_text`.

@@ -17,6 +17,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <texsyn/feature_scale.h>
 #include <texsyn/options.h>
 #include <texsyn/source_map.h>
 #include <texsyn/stop.h>
@@ -32,19 +33,28 @@ enum class PatchVote {
     Mean,
 };
 
-/// Options of the patch method.
+/// Which axes the patch method's output wraps around along: it tiles along them.
+enum class PatchWrap { Both, X, Y, None };
+
+/// Options of the patch method. Left automatic (levels 0, patch and iterations empty), the
+/// schedule tunes itself to the sample (feature_scale.h): the result's synth:options
+/// records what was chosen.
 struct PatchOptions {
     int width = 0; ///< output size; 0x0 = the sample's size
     int height = 0;
     /// Gaussian pyramid levels, synthesized coarse to fine; 0 = chosen from the sample's
-    /// feature size (the coarsest level shrinks its features to about one patch).
+    /// feature scale and size: a feature at most three quarters of the largest patch at the
+    /// coarsest level, whose sample keeps at least 16 pixels and (unless the pattern
+    /// repeats) an eighth of the sample's side; at least 3 where they fit.
     int levels = 0;
     /// Patch sizes (odd), largest first: every level but the finest optimizes with each in
-    /// turn; the finest only refines with the last (smallest).
-    std::vector<int> patch = { 11, 7 };
+    /// turn; the finest only refines with the last (smallest). Empty = 11 and 7 (smaller
+    /// for a sample or output under 33 pixels).
+    std::vector<int> patch;
     /// EM iterations (search, then vote) per patch size, per level, finest first; one value
-    /// = every level; coarser levels missing from the list repeat the last.
-    std::vector<int> iterations = { 1, 2, 4 };
+    /// = every level; coarser levels missing from the list repeat the last. Empty = 1 at
+    /// the finest level, 3 at the next, 8 at the coarser ones.
+    std::vector<int> iterations;
     /// Strength of the spatial-uniformity penalty (Kaspar et al. §4.3): a source patch used
     /// more often than an even use of the sample would use it costs repetition x its excess
     /// use x the sample's patch variance. 0 = the plain method.
@@ -61,6 +71,13 @@ struct PatchOptions {
     /// mirror images if square, else its 3 mirror images besides itself), for samples
     /// without a direction; 0: the sample's orientation is kept (courses stay horizontal).
     int isotropic = 0;
+    /// 1: the sample's low-order lighting is divided out first (flatten_illumination,
+    /// homogeneity.h), so that a lit sample is not re-tiled as light and dark blocks; the
+    /// result copies the flattened sample's pixels.
+    int flatten = 0;
+    /// The axes the result tiles along (trim sheets tile along one): along an axis that
+    /// does not wrap, the result has edges like a photograph's.
+    PatchWrap wrap = PatchWrap::Both;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.
@@ -74,16 +91,18 @@ struct PatchOptions {
     /// Checks the options alone (ranges, odd sizes, list lengths). False with a message.
     bool validate(std::string& error) const;
 
-    /// EM iterations at level `level` (0 finest).
+    /// EM iterations at level `level` (0 finest); with iterations empty, the automatic
+    /// count for `levels` levels (levels 0: as if `level` were the coarsest).
     int iterations_at(int level) const;
 };
 
 /// What a synthesis measured of its result (the tool prints it with -v).
 struct PatchReport {
-    int levels = 0;                     ///< levels synthesized (the automatic choice if levels=0)
-    int feature_size = 0;               ///< the sample's feature size in pixels (levels=0's input)
-    double used_fraction = 0.0;         ///< fraction of the sample's pixels the result copies
-    size_t largest_copy = 0;            ///< pixels of the largest region copied verbatim
+    int levels = 0;             ///< levels synthesized (the automatic choice if levels=0)
+    FeatureScale scale;         ///< the sample's feature scale (the automatic schedule's input)
+    std::string schedule;       ///< how the levels were chosen, one phrase
+    double used_fraction = 0.0; ///< fraction of the sample's pixels the result copies
+    size_t largest_copy = 0;    ///< pixels of the largest region copied verbatim
     double largest_copy_fraction = 0.0; ///< largest_copy / the sample's pixels
 };
 
@@ -93,20 +112,21 @@ size_t patch_memory_estimate(int sample_width, int sample_height, int nchannels,
 
 /// Texture optimization, coarse to fine.
 ///
-/// Gaussian pyramids (the (1,4,6,4,1)/16 kernel) of the sample (reflected) and the output
-/// (circular), `levels` levels. Every output pixel is the centre of a toroidal patch (so the
-/// output tiles) with a source: the centre of a patch inside the sample at the same level.
-/// The coarsest level starts from seeded random sources; each finer level from its coarser
-/// level's sources, doubled. Each EM iteration searches — PatchMatch passes that read the
-/// previous field and write a new one (jump-flood propagation at steps 4, 2, 1 with
-/// k-coherence candidates, then a random search around the best at halving radii), so the
-/// field does not depend on the schedule — and then votes: each pixel the (robust) average
-/// of the overlapping source patches' pixels, whose histogram is matched to the sample
-/// level's, channel by channel. The result is a copy: each pixel takes the sample pixel, of
-/// those its overlapping patches voted for, nearest the average, so every output pixel is a
-/// sample pixel and the source map reproduces it. All channels (colour, alpha, extra
-/// channels) are part of the patches and copied; `guide` (one channel, the sample's size),
-/// if given, replaces the automatic guidance channel.
+/// Gaussian pyramids (the (1,4,6,4,1)/16 kernel) of the sample (reflected) and the output,
+/// `levels` levels. Every output pixel is the centre of a patch, toroidal along the axes
+/// opt.wrap names (so the output tiles along them), with a source: the centre of a patch
+/// inside the sample at the same level. The coarsest level starts from seeded random
+/// sources; each finer level from its coarser level's sources, doubled, voted with its
+/// own pixels. Each EM iteration searches — PatchMatch passes that read the previous field
+/// and write a new one (propagation with k-coherence candidates, then a random search
+/// around the best at halving radii; at the coarsest level jump-flood propagation at
+/// steps 4, 2, 1 every iteration), so the field does not depend on the schedule — and
+/// then votes: each pixel the (robust) average of the overlapping source patches' pixels,
+/// whose histogram is matched to the sample level's, channel by channel. The result is a copy: each
+/// pixel takes the sample pixel, of those its overlapping patches voted for, nearest the average,
+/// so every output pixel is a sample pixel and the source map reproduces it. All channels (colour,
+/// alpha, extra channels) are part of the patches and copied; `guide` (one channel, the sample's
+/// size), if given, replaces the automatic guidance channel.
 ///
 /// `dst` receives opt.width x opt.height with the sample's channels; `source_map`, if not
 /// null, the source map (source_map.h); `report`, if not null, what the result copies.

@@ -44,6 +44,9 @@ struct SolidOptions {
     int orientations = 4; ///< steerable bands per scale, 1..8 (combined only)
     HistogramMode histogram = HistogramMode::Exact;
     FftBackend fft = FftBackend::Kiss;
+    /// 1: the sample's low-order lighting is divided out before analysis
+    /// (flatten_illumination, homogeneity.h; Heeger & Bergen 1995 §6).
+    int flatten = 0;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) after each iteration of each channel, from the

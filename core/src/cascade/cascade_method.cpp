@@ -89,7 +89,7 @@ bool cascade_layout(const MethodOptions& options, const std::vector<InputLayout>
         layout.channelnames = { "R", "G", "B" };
     else if (inputs.empty() || given.options.transfer != CascadeTransfer::Channels)
         layout.channelnames = { "Y" };
-    layout.tiles = inputs.empty();
+    layout.set_tiles(inputs.empty());
     return true;
 }
 

@@ -29,6 +29,7 @@ const OptionTable<ChoosyOptions>& ChoosyOptions::table()
         t.integer("isotropic", &O::isotropic, 0, 1,
             "1 = also match the sample rotated and mirrored (8 orientations): isotropic "
             "variants of anisotropic samples; 0 = keep the sample's orientation");
+        detail::add_flatten(t);
         t.choice("search", &O::search,
             { { "exhaustive", ChoosySearch::Exhaustive }, { "kdtree", ChoosySearch::KdTree } },
             "exhaustive (every neighbourhood, full dimension, exact) or kdtree (principal "

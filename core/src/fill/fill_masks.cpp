@@ -8,6 +8,7 @@
 
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <texsyn/feature_scale.h>
 #include <texsyn/pyramid.h>
 
 #include "methods/method_helpers_pvt.h"
@@ -219,7 +220,9 @@ void add_guidance(std::vector<Plane>& planes, int ncolour, const std::vector<uin
         pushpull_fill(filled, nthreads);
         throw_if_stopped(stop);
     }
-    const int feature = feature_size(filled.planes);
+    PlanarImage measured;
+    measured.channels.assign(filled.planes.begin(), filled.planes.begin() + ncolour);
+    const int feature = int(std::lround(estimate_feature_scale(measured, nthreads).size));
     throw_if_stopped(stop);
     Plane g = guidance_channel(filled.planes, feature);
     for (size_t i = 0; i < g.size(); ++i)

@@ -86,7 +86,7 @@ bool fill_layout(const MethodOptions& options, const std::vector<InputLayout>& i
     ResultLayout& layout, std::string&)
 {
     layout = layout_from_input(inputs[0], options);
-    layout.tiles = false;
+    layout.set_tiles(false);
     return true;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,28 @@ struct RegionFill {
 bool fill_region(std::vector<CropLevel>& levels, const std::vector<std::vector<Plane>>& sample,
     const FillOptions& opt, uint64_t stream, double& done, double total, RegionFill& result,
     std::string& error);
+
+/// One region's copies, as compose_region reads them: its crop (in image pixels), its
+/// channel count, and two readers of pixel values (raw, as the image holds them).
+struct RegionCopies {
+    PixelBox crop;
+    int channels = 0;
+    /// The value of the kept image at image pixel (x, y), every channel, into `out`.
+    std::function<void(int x, int y, float* out)> kept;
+    /// The copied content at crop pixel q (y * crop width + x) moved by (dx, dy): the pixel
+    /// at q's source plus (dx, dy), clamped to the source, every channel, into `out`.
+    std::function<void(size_t q, int dx, int dy, float* out)> copied;
+};
+
+/// Writes (through `write(x, y, values)`) every pixel of the region's crop where `mask`
+/// (the image's size) is above 0: the copied content, with FillOutline::Match offset by a
+/// smooth membrane that takes the difference between the kept pixels and the copies'
+/// continuations across the hole's outline to zero at the outline (seamless cloning:
+/// Pérez et al. 2003, as Farbman et al. 2009's membrane) and, if `rim` > 1 (a soft image),
+/// faded in over `rim` pixels from the kept pixels' smooth (push-pull) continuation;
+/// blended with the kept value by the mask: (1 - m) x kept + m x fill.
+void compose_region(const RegionCopies& copies, const Plane& mask, FillOutline outline, int rim,
+    int nthreads, const std::function<void(int, int, const float*)>& write);
 
 /// Progress units fill_region counts for these crop levels (pixels searched).
 double fill_work(const std::vector<CropLevel>& levels, const FillOptions& opt);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include <texsyn/histogram.h>
 #include <texsyn/pyramid.h>
 #include <texsyn/random.h>
 
@@ -80,6 +81,53 @@ std::string size_text(int w, int h)
     return std::to_string(w) + "x" + std::to_string(h);
 }
 
+// Per channel, the histogram the filled pixels are matched to: the values of the source
+// pixels (the crop's patches come from them), or of the sample's level.
+std::vector<QuantileTable> fill_histograms(
+    const CropLevel& crop, const std::vector<Plane>& sample_level)
+{
+    std::vector<QuantileTable> tables;
+    if (!sample_level.empty()) {
+        for (const Plane& p : sample_level)
+            tables.emplace_back(p);
+        return tables;
+    }
+    std::vector<float> values;
+    for (const Plane& p : crop.planes) {
+        values.clear();
+        for (size_t i = 0; i < p.size(); ++i)
+            if (crop.source[i])
+                values.push_back(p.data()[i]);
+        tables.push_back(
+            values.empty() ? QuantileTable() : QuantileTable(values.data(), values.size()));
+    }
+    return tables;
+}
+
+// The filled pixels of each channel matched to its histogram (Kaspar et al. 2015 §4.1: the
+// vote averages patches that disagree, and without this the fill washes out to a flat
+// blur where the hole is wide).
+void match_filled(std::vector<Plane>& out, const std::vector<uint8_t>& known,
+    const std::vector<QuantileTable>& tables, int nthreads)
+{
+    std::vector<size_t> filled;
+    for (size_t i = 0; i < known.size(); ++i)
+        if (!known[i])
+            filled.push_back(i);
+    if (filled.empty())
+        return;
+    for (size_t c = 0; c < out.size(); ++c) {
+        if (tables[c].empty())
+            continue;
+        Plane values(int(filled.size()), 1);
+        for (size_t j = 0; j < filled.size(); ++j)
+            values.data()[j] = out[c].data()[filled[j]];
+        match_histogram(values, tables[c], HistogramMode::Exact, nthreads);
+        for (size_t j = 0; j < filled.size(); ++j)
+            out[c].data()[filled[j]] = values.data()[j];
+    }
+}
+
 } // namespace
 
 double fill_work(const std::vector<CropLevel>& levels, const FillOptions& opt)
@@ -126,6 +174,8 @@ bool fill_region(std::vector<CropLevel>& levels, const std::vector<std::vector<P
                 out[c] = std::move(next);
             }
         }
+        const std::vector<QuantileTable> histograms
+            = fill_histograms(crop, self ? std::vector<Plane>() : sample[size_t(l)]);
         const std::vector<int> patches = patches_at(opt, l);
         const std::vector<uint32_t> similar = l == 0
             ? std::vector<uint32_t>()
@@ -156,10 +206,10 @@ bool fill_region(std::vector<CropLevel>& levels, const std::vector<std::vector<P
             settle_sources(field, sources, self, active, opt.seed, 0x46494c0000000000ull + draws);
             coarse_range = sources.range;
             if (nothing_known && l == nlevels - 1 && pi == 0)
-                vote(sources.level, field, p, PatchVote::Mean, opt.nthreads, opt.stop, out, false);
+                vote(sources.level, field, p, PatchVote::Mean, opt.nthreads, opt.stop, out,
+                    Wrap::none());
             for (int it = 0; it < opt.iterations_at(l); ++it) {
-                const PixelImage padded
-                    = interleave_padded(out, half, opt.nthreads, Boundary::Reflect);
+                const PixelImage padded = interleave_padded(out, half, opt.nthreads, Wrap::none());
                 MatchSettings match;
                 match.patch = p;
                 match.coherence = opt.coherence;
@@ -171,24 +221,30 @@ bool fill_region(std::vector<CropLevel>& levels, const std::vector<std::vector<P
                 match.stream = draws * 64 + uint64_t(it);
                 match.nthreads = opt.nthreads;
                 match.active = &active;
+                match.wrap = Wrap::none();
                 match.stop = opt.stop;
                 patch_match(sources.level, padded, half, similar, match, field);
                 throw_if_stopped(opt.stop);
                 std::vector<Plane> voted;
-                vote(sources.level, field, p, opt.vote, opt.nthreads, opt.stop, voted, false);
+                vote(
+                    sources.level, field, p, opt.vote, opt.nthreads, opt.stop, voted, Wrap::none());
                 throw_if_stopped(opt.stop);
                 for (size_t c = 0; c < out.size(); ++c)
                     for (size_t i = 0; i < out[c].size(); ++i)
                         if (!crop.known[i])
                             out[c].data()[i] = voted[c].data()[i];
+                // Not at the finest level, which starts from a layout that has not washed
+                // out: there the fill's own proportions (of mortar to brick, say) stand.
+                if (l > 0)
+                    match_filled(out, crop.known, histograms, opt.nthreads);
                 done += double(w) * double(h);
                 detail::report_progress(opt.progress, opt.stop, float(std::min(1.0, done / total)));
             }
             last_patch = p;
         }
     }
-    result.copied
-        = nearest_votes(sources.level, field, last_patch, out, opt.nthreads, opt.stop, false);
+    result.copied = nearest_votes(
+        sources.level, field, last_patch, out, opt.nthreads, opt.stop, Wrap::none());
     throw_if_stopped(opt.stop);
     return true;
 }

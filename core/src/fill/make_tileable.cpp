@@ -7,33 +7,52 @@
 
 #include <OpenImageIO/imagebufalgo.h>
 
+#include "methods/common_options_pvt.h"
 #include "methods/method_helpers_pvt.h"
+#include "patch/patch_schedule_pvt.h"
 
 namespace texsyn {
 
 namespace {
 
-// The fill's options but `context` (the band's context is the whole image).
+// The fill's options but `context` (the band's context is the whole image) and `flatten`
+// (make_tileable flattens the whole image).
 const OptionTable<FillOptions>& band_fill_table()
 {
     return declared_table<FillOptions>([](OptionTable<FillOptions>& t) {
         std::vector<std::string> names;
         for (const OptionField& f : FillOptions::table().fields())
-            if (f.name != "context")
+            if (f.name != "context" && f.name != "flatten")
                 names.push_back(f.name);
         t.subset(FillOptions::table(), names);
     });
 }
 
-// A one-channel w x h mask: 1 on the columns and rows within band / 2 of the middle (where
-// the seams lie once the image is rolled by half its size).
-OIIO::ImageBuf cross_mask(int w, int h, int band)
+// The mask's value `d` pixels inside the band's edge: ramps from 0 to 1 over `feather`
+// pixels, so that the band blends into the kept pixels instead of meeting them at a
+// straight cut.
+float band_weight(int d, int feather)
+{
+    return d >= feather ? 1.0f : float(d + 1) / float(feather + 1);
+}
+
+// A one-channel w x h mask: above 0 on the columns (with `along_x`) and rows (with
+// `along_y`) within band / 2 of the middle (where the seams lie once the image is rolled
+// by half its size), 1 but for a ramp of `feather` pixels along the band's edges.
+OIIO::ImageBuf band_mask(int w, int h, int band, int feather, bool along_x, bool along_y)
 {
     OIIO::ImageBuf mask(OIIO::ImageSpec(w, h, 1, OIIO::TypeDesc::FLOAT));
-    const float one = 1.0f;
     const int x0 = w / 2 - band / 2, y0 = h / 2 - band / 2;
-    OIIO::ImageBufAlgo::fill(mask, &one, OIIO::ROI(x0, x0 + band, 0, h));
-    OIIO::ImageBufAlgo::fill(mask, &one, OIIO::ROI(0, w, y0, y0 + band));
+    auto across = [&](bool on, int i, int i0) {
+        return !on || i < i0 || i >= i0 + band
+            ? 0.0f
+            : band_weight(std::min(i - i0, i0 + band - 1 - i), feather);
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float m = std::max(across(along_x, x, x0), across(along_y, y, y0));
+            mask.setpixel(x, y, &m);
+        }
     return mask;
 }
 
@@ -58,7 +77,8 @@ bool tileable(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const TileableOp
     const int w = image.spec().width, h = image.spec().height, side = std::min(w, h);
     // 3/16 of the side: narrower bands leave courses of bricks and rows of tiles too little
     // room to change phase, and come out smudged.
-    const int patch = opt.options.patch.front();
+    const int patch = opt.options.patch.empty() ? detail::automatic_patch_sizes(side).front()
+                                                : opt.options.patch.front();
     const int band = opt.band > 0 ? opt.band : std::max(2 * patch, 3 * side / 16);
     if (opt.band == 0 && 3 * band > side) {
         dst.errorfmt("a {}x{} image is too small for a band two {}-pixel patches wide (at most "
@@ -74,23 +94,42 @@ bool tileable(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const TileableOp
                     + ")"));
         return false;
     }
-    const OIIO::ImageBuf rolled = OIIO::ImageBufAlgo::circular_shift(image, w / 2, h / 2);
+    PlanarImage planes;
+    if (!planes_from_imagebuf(image, planes, error)) {
+        dst.errorfmt("{}", error);
+        return false;
+    }
+    OIIO::ImageBuf flattened;
+    if (opt.flatten) {
+        flatten_illumination(planes, opt.options.nthreads);
+        imagebuf_from_planes(planes, flattened);
+        flattened.specmod().extra_attribs = image.spec().extra_attribs;
+    }
+    const OIIO::ImageBuf& source = opt.flatten ? flattened : image;
+    const FeatureScale scale = estimate_feature_scale(planes, opt.options.nthreads);
+    const bool along_x = opt.axis != TileAxes::Y, along_y = opt.axis != TileAxes::X;
+    const int dx = along_x ? w / 2 : 0, dy = along_y ? h / 2 : 0;
+    const OIIO::ImageBuf rolled = OIIO::ImageBufAlgo::circular_shift(source, dx, dy);
     detail::throw_if_stopped(opt.options.stop);
     OIIO::ImageBuf filled;
-    if (!texture_fill(filled, rolled, cross_mask(w, h, band), opt.options)) {
+    if (!texture_fill(
+            filled, rolled, band_mask(w, h, band, band / 4, along_x, along_y), opt.options)) {
         dst.errorfmt("{}", filled.geterror());
         return false;
     }
-    if (!OIIO::ImageBufAlgo::circular_shift(dst, filled, w - w / 2, h - h / 2)) {
+    if (!OIIO::ImageBufAlgo::circular_shift(dst, filled, (w - dx) % w, (h - dy) % h)) {
         dst.errorfmt("{}", dst.geterror());
         return false;
     }
     detail::tag_synthesis(
         dst.specmod(), "tileable", opt.options.seed, TileableOptions::table().format(opt));
-    dst.specmod().attribute("wrapmodes", "periodic,periodic");
+    dst.specmod().attribute("wrapmodes",
+        std::string(along_x ? "periodic" : "black") + "," + (along_y ? "periodic" : "black"));
     if (report) {
         report->band = band;
-        report->changed_fraction = changed_fraction(dst, image);
+        report->changed_fraction = changed_fraction(dst, source);
+        report->scale = scale;
+        report->band_too_narrow = scale.size > 2.0 * band;
     }
     return true;
 }
@@ -104,6 +143,13 @@ const OptionTable<TileableOptions>& TileableOptions::table()
         t.integer("band", &O::band, 0, 1 << 16,
             "width in pixels of the band across each wrap-around seam that is re-synthesized; "
             "0 = 3/16 of the image's shorter side (at least two of the largest patches)");
+        t.choice("axis", &O::axis,
+            { { "both", TileAxes::Both }, { "x", TileAxes::X }, { "y", TileAxes::Y } },
+            "the axes the result tiles along: both, x (left and right edges meet: a strip "
+            "that repeats sideways, as in a trim sheet) or y");
+        detail::add_flatten(t,
+            "first (a lit scan cannot tile: pixels outside the band are then the flattened "
+            "image's)");
         t.include(&O::options, band_fill_table());
     });
 }

@@ -7,16 +7,21 @@
 
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <texsyn/feature_scale.h>
 #include <texsyn/pyramid.h>
 
 #include "fill_pvt.h"
 #include "methods/method_helpers_pvt.h"
+#include "patch/patch_schedule_pvt.h"
 
 namespace texsyn {
 
 namespace {
 
 using detail::PixelBox;
+
+// The widest fade-in at a soft plate's outline (a plate enlarged 16 times).
+constexpr int kMaxRim = 16;
 
 std::string layout_text(const PlanarImage& p)
 {
@@ -58,7 +63,7 @@ struct Region {
 };
 
 bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
-    const FillOptions& opt, const OIIO::ImageBuf* sample, const OIIO::ImageBuf* exclude,
+    const FillOptions& given, const OIIO::ImageBuf* sample, const OIIO::ImageBuf* exclude,
     FillReport* report)
 {
     std::string error;
@@ -66,11 +71,14 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
         dst.errorfmt("{}", message);
         return false;
     };
-    if (!opt.validate(error))
+    if (!given.validate(error))
         return fail(error);
     PlanarImage in;
     if (!planes_from_imagebuf(image, in, error))
         return fail("image: " + error);
+    FillOptions opt = given;
+    if (opt.patch.empty())
+        opt.patch = detail::automatic_patch_sizes(std::min(in.width(), in.height()));
     detail::throw_if_stopped(opt.stop);
     const int w = in.width(), h = in.height();
     Plane mask_plane, exclude_plane;
@@ -148,7 +156,9 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     }
     const OIIO::ImageBuf& copied_from = sample ? *sample : image;
     const int nc = in.nchannels();
-    std::vector<float> mine(static_cast<size_t>(nc)), theirs(static_cast<size_t>(nc));
+    // The plate's finest detail sets how softly the copies fade in at the outline.
+    const FeatureScale plate = estimate_feature_scale(in, opt.nthreads);
+    const int rim = std::min(kMaxRim, int(plate.finest_size / 2.0));
     for (size_t k = 0; k < regions.size(); ++k) {
         Region& r = regions[k];
         std::vector<std::vector<Plane>> levels_of_sample;
@@ -160,27 +170,28 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
             return fail(error);
         const int cw = r.crop.width();
         const int source_width = sample ? from.width() : cw;
-        for (int y = r.hole.y0; y < r.hole.y1; ++y)
-            for (int x = r.hole.x0; x < r.hole.x1; ++x) {
-                const float m = std::min(1.0f, mask_plane(x, y));
-                if (!(m > 0.0f))
-                    continue;
-                const uint32_t s
-                    = result.copied[size_t(y - r.crop.y0) * size_t(cw) + size_t(x - r.crop.x0)];
-                int sx = int(s % uint32_t(source_width)), sy = int(s / uint32_t(source_width));
-                if (!sample) {
-                    sx += r.crop.x0;
-                    sy += r.crop.y0;
-                }
-                image.getpixel(x + image.xbegin(), y + image.ybegin(), mine.data());
-                copied_from.getpixel(
-                    sx + copied_from.xbegin(), sy + copied_from.ybegin(), theirs.data());
-                for (int c = 0; c < nc; ++c)
-                    mine[size_t(c)] = m == 1.0f
-                        ? theirs[size_t(c)]
-                        : (1.0f - m) * mine[size_t(c)] + m * theirs[size_t(c)];
-                dst.setpixel(x + dst.xbegin(), y + dst.ybegin(), mine.data());
+        const int sw = copied_from.spec().width, sh = copied_from.spec().height;
+        detail::RegionCopies copies;
+        copies.crop = r.crop;
+        copies.channels = nc;
+        copies.kept = [&](int x, int y, float* out) {
+            image.getpixel(x + image.xbegin(), y + image.ybegin(), out);
+        };
+        copies.copied = [&](size_t q, int dx, int dy, float* out) {
+            const uint32_t s = result.copied[q];
+            int sx = int(s % uint32_t(source_width)), sy = int(s / uint32_t(source_width));
+            if (!sample) {
+                sx += r.crop.x0;
+                sy += r.crop.y0;
             }
+            sx = std::clamp(sx + dx, 0, sw - 1);
+            sy = std::clamp(sy + dy, 0, sh - 1);
+            copied_from.getpixel(sx + copied_from.xbegin(), sy + copied_from.ybegin(), out);
+        };
+        detail::compose_region(
+            copies, mask_plane, opt.outline, rim, opt.nthreads, [&](int x, int y, const float* v) {
+                dst.setpixel(x + dst.xbegin(), y + dst.ybegin(), v);
+            });
     }
     detail::report_progress(opt.progress, opt.stop, 1.0f);
     if (report) {

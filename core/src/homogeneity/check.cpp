@@ -34,6 +34,16 @@ void score_and_warn(HomogeneityReport& r)
             + " between tiles (limit " + percent(homogeneity_max_local_mean_variation)
             + "): synthesis will be blotchy; crop to an evenly lit area, or try flatten=1 if "
               "it is lighting");
+    r.uneven_for_copying = r.illumination_amplitude > homogeneity_max_lighting_for_copying
+        && r.illumination_planar_fraction >= 0.5
+        && r.lighting_share >= homogeneity_min_lighting_share
+        && r.lit_out_contrast_variation <= homogeneity_max_contrast_variation_of_lighting;
+    if (r.uneven_for_copying && r.illumination_amplitude <= homogeneity_max_illumination_amplitude)
+        r.warnings.push_back("the lighting varies by " + percent(r.illumination_amplitude) + ", "
+            + r.illumination_description
+            + ": the copying methods (patch, neighborhood, choosy, "
+              "fill, tileable) will re-tile it as light and dark blocks; flatten=1 divides it "
+              "out");
     if (r.local_contrast_variation > homogeneity_max_local_contrast_variation)
         r.warnings.push_back("the local contrast varies by " + percent(r.local_contrast_variation)
             + " between tiles (limit " + percent(homogeneity_max_local_contrast_variation)
@@ -60,6 +70,7 @@ HomogeneityReport check_homogeneity(const PlanarImage& sample, int nthreads)
     else
         r.illumination_description = "flat";
     measure_local_variation(sample, r, nthreads);
+    measure_lighting(sample, r, nthreads);
     score_and_warn(r);
     if (r.tiles_x == 0)
         r.warnings.push_back("the sample is " + std::to_string(r.width) + "x"

@@ -34,6 +34,10 @@ bool fit_illumination(const PlanarImage& image, IlluminationFit& fit, int nthrea
 /// report.illumination, evaluated over the pixels of the report's width x height.
 void describe_illumination(HomogeneityReport& report, int nthreads);
 
+/// HomogeneityReport::lighting_share and lit_out_contrast_variation of `image`, for the
+/// fitted illumination in `report`.
+void measure_lighting(const PlanarImage& image, HomogeneityReport& report, int nthreads);
+
 /// The tile statistics of check_homogeneity, filled into `report` (tiles_*, tile_size,
 /// local_*_variation). Leaves them zero if fewer than 2x2 tiles fit.
 void measure_local_variation(const PlanarImage& image, HomogeneityReport& report, int nthreads);

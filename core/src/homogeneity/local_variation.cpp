@@ -87,4 +87,57 @@ void measure_local_variation(const PlanarImage& image, HomogeneityReport& report
     report.local_contrast_variation = coefficient_of_variation(contrasts);
 }
 
+void measure_lighting(const PlanarImage& image, HomogeneityReport& report, int nthreads)
+{
+    // 8x8 regions: enough of them for a six-term fit not to explain their means by chance.
+    constexpr int kRegions = 8;
+    const IlluminationFit& fit = report.illumination;
+    const int w = image.width(), h = image.height();
+    const int rw = w / kRegions, rh = h / kRegions;
+    if (rw < 2 || rh < 2)
+        return;
+    const size_t n = kRegions * kRegions;
+    // Per region: the luminance's sum, the fit's, and the lit-out luminance's sum and sum
+    // of squares (about its region's mean, in a second pass: no cancellation).
+    std::vector<double> measured(n), fitted(n), flat_mean(n), flat_squares(n);
+    const double area = double(rw) * double(rh);
+    OIIO::parallel_for(
+        int64_t(0), int64_t(kRegions),
+        [&](int64_t ry) {
+            std::vector<float> luma(static_cast<size_t>(w));
+            const size_t row = size_t(ry) * kRegions;
+            for (int pass = 0; pass < 2; ++pass)
+                for (int y = int(ry) * rh; y < int(ry + 1) * rh; ++y) {
+                    luminance_row(image, y, luma.data());
+                    for (int rx = 0; rx < kRegions; ++rx)
+                        for (int x = rx * rw; x < (rx + 1) * rw; ++x) {
+                            const double g = std::max(fit.at(x, y, w, h), 1e-12);
+                            const double flat = luma[size_t(x)] / g;
+                            if (pass == 0) {
+                                measured[row + size_t(rx)] += luma[size_t(x)];
+                                fitted[row + size_t(rx)] += g;
+                                flat_mean[row + size_t(rx)] += flat / area;
+                            } else {
+                                const double d = flat - flat_mean[row + size_t(rx)];
+                                flat_squares[row + size_t(rx)] += d * d;
+                            }
+                        }
+                }
+        },
+        OIIO::paropt(nthreads));
+    double mean = 0.0;
+    for (double v : measured)
+        mean += v;
+    mean /= double(n);
+    double total = 0.0, residual = 0.0;
+    std::vector<double> contrasts(n);
+    for (size_t i = 0; i < n; ++i) {
+        total += (measured[i] - mean) * (measured[i] - mean);
+        residual += (measured[i] - fitted[i]) * (measured[i] - fitted[i]);
+        contrasts[i] = flat_mean[i] > 0.0 ? std::sqrt(flat_squares[i] / area) / flat_mean[i] : 0.0;
+    }
+    report.lighting_share = total > 0.0 ? std::max(0.0, 1.0 - residual / total) : 0.0;
+    report.lit_out_contrast_variation = coefficient_of_variation(contrasts);
+}
+
 } // namespace texsyn::homogeneity

@@ -2,6 +2,8 @@
 // Options several methods take, declared once (the same name, range and help everywhere).
 #pragma once
 
+#include <string>
+
 #include <texsyn/options.h>
 
 namespace texsyn::detail {
@@ -25,6 +27,18 @@ template <class T>
 void add_levels(OptionTable<T>& t, int max_levels, const char* help)
 {
     t.integer("levels", &T::levels, 1, max_levels, help).shared();
+}
+
+/// "flatten": 1 = the sample's low-order lighting divided out before the method reads it
+/// (flatten_illumination, homogeneity.h). T has an int member flatten.
+template <class T>
+void add_flatten(OptionTable<T>& t, const char* what = "before it is read")
+{
+    t.integer("flatten", &T::flatten, 0, 1,
+         (std::string("1 = divide the sample by its fitted lighting gradient ") + what
+             + " (see texsyn --check and docs/homogeneity.md)")
+             .c_str())
+        .shared();
 }
 
 /// "eps": the approximation factor of a kd-tree search, 0..100. T has a float member eps.

@@ -7,12 +7,14 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/fft.h>
+#include <texsyn/homogeneity.h>
 #include <texsyn/image.h>
 #include <texsyn/memory.h>
 #include <texsyn/methods.h>
@@ -60,9 +62,15 @@ OIIO::ImageBuf value_form(const char* name, F&& f)
     return result;
 }
 
+/// Whether an options struct has a `flatten` member (the methods that take flatten=).
+template <class T, class = void>
+struct has_flatten : std::false_type { };
+template <class T>
+struct has_flatten<T, std::void_t<decltype(std::declval<const T&>().flatten)>> : std::true_type { };
+
 /// The start of every synthesis from one sample: opt.validate(), then the sample's planes
-/// (planes_from_imagebuf: a read error, NaN or Inf is refused). False with the message in
-/// dst.
+/// (planes_from_imagebuf: a read error, NaN or Inf is refused), flattened
+/// (flatten_illumination) if the options have flatten=1. False with the message in dst.
 template <class Options>
 bool validated_sample(
     OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Options& opt, PlanarImage& in)
@@ -80,6 +88,9 @@ bool validated_sample(
         dst.errorfmt("{}", error);
         return false;
     }
+    if constexpr (has_flatten<Options>::value)
+        if (opt.flatten)
+            flatten_illumination(in, opt.nthreads);
     return true;
 }
 

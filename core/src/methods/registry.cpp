@@ -2,9 +2,15 @@
 // The registry's rows, listed once, and the checks every run goes through.
 #include <texsyn/methods.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <new>
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <texsyn/homogeneity.h>
 
 #include "result_layout_pvt.h"
 
@@ -27,6 +33,53 @@ const Method& cascade_method();
 const Method& analyze_method();
 const Method& check_method();
 } // namespace detail
+
+namespace {
+
+// Above this many pixels a sample is checked on a reduced copy: the lighting and the
+// regions' means are low-frequency measures.
+constexpr int64_t kCheckedPixels = 1024 * 1024;
+
+// For a run with flatten=0: a warning if its first image input is lit unevenly enough for
+// the method to re-tile the lighting (check_homogeneity's uneven_for_copying).
+void warn_of_uneven_lighting(
+    const MethodOptions& options, const std::vector<MethodInput>& inputs, MethodResult& result)
+{
+    if (!options.table().find("flatten") || options.value("flatten") != "0")
+        return;
+    const MethodInput* sample = nullptr;
+    for (const MethodInput& in : inputs)
+        if (in.image && !sample)
+            sample = &in;
+    if (!sample)
+        return;
+    const OIIO::ImageSpec& spec = sample->image->spec();
+    OIIO::ImageBuf reduced;
+    const OIIO::ImageBuf* measured = sample->image;
+    if (int64_t(spec.width) * spec.height > kCheckedPixels) {
+        const double k = std::sqrt(double(kCheckedPixels) / (double(spec.width) * spec.height));
+        const int w = std::max(1, int(spec.width * k)), h = std::max(1, int(spec.height * k));
+        reduced = OIIO::ImageBufAlgo::resize(*sample->image, "", 0.0f, OIIO::ROI(0, w, 0, h));
+        measured = &reduced;
+    }
+    PlanarImage planes;
+    std::string error;
+    if (!planes_from_imagebuf(*measured, planes, error))
+        return;
+    const HomogeneityReport r = check_homogeneity(planes);
+    if (!r.uneven_for_copying)
+        return;
+    char amplitude[16];
+    std::snprintf(amplitude, sizeof(amplitude), "%.0f%%", 100.0 * r.illumination_amplitude);
+    result.warnings.push_back({ "flatten",
+        OIIO::Filesystem::filename(sample->name) + " is unevenly lit (" + amplitude + ", "
+            + r.illumination_description
+            + "): the result carries it as light and dark patches (or tiles whose edges differ); "
+              "flatten=1 divides the "
+              "lighting out (texsyn SAMPLE --check measures it)" });
+}
+
+} // namespace
 
 const std::vector<const Method*>& methods()
 {
@@ -147,6 +200,7 @@ bool run_method(const Method& method, const MethodOptions& options,
     try {
         if (!method.run(options, inputs, files, settings, result, error))
             return false;
+        warn_of_uneven_lighting(options, inputs, result);
         name_inputs(method, inputs, result);
         return detail::check_result_layout(method, options, inputs, result, error);
     } catch (const std::bad_alloc&) {

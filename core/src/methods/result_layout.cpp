@@ -71,8 +71,8 @@ bool check_result_layout(const Method& method, const MethodOptions& options,
     const OIIO::ImageSpec& got = result.image.spec();
     if (got.width == want.width && got.height == want.height && got.depth == want.depth
         && got.channelnames == want.channelnames) {
-        if (want.tiles)
-            result.image.specmod().attribute("wrapmodes", "periodic,periodic");
+        if (!want.wrapmodes().empty())
+            result.image.specmod().attribute("wrapmodes", want.wrapmodes());
         return true;
     }
     auto text = [](int w, int h, int d, const std::vector<std::string>& names) {

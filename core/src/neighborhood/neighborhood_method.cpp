@@ -15,7 +15,7 @@ bool neighborhood_layout(const NeighborhoodOptions& opt, const InputLayout& samp
     const MethodOptions& options, ResultLayout& layout, std::string& error)
 {
     layout = layout_from_input(sample, options);
-    layout.tiles = opt.tile != 0;
+    layout.set_tiles(opt.tile != 0);
     return check_neighborhood_sizes(
         sample.width, sample.height, layout.width, layout.height, opt, error);
 }

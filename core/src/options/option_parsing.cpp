@@ -463,18 +463,22 @@ OptionField size_field(std::string name, int hi, std::string zero_means, std::st
 }
 
 OptionField integers_field(std::string name, int lo, int hi, bool odd, size_t max_count,
-    std::string help, MemberAccess<std::vector<int>> member)
+    std::string empty_text, std::string help, MemberAccess<std::vector<int>> member)
 {
     OptionField f = described(name, std::move(help), OptionType::Integers,
         "up to " + std::to_string(max_count) + (odd ? " odd" : "") + " integers "
-            + range_text(lo, hi, true) + ", comma-separated",
+            + range_text(lo, hi, true) + ", comma-separated"
+            + (empty_text.empty() ? "" : ", or " + empty_text),
         lo, hi);
     f.odd = odd;
     f.max_count = max_count;
+    f.none = empty_text;
     const OptionField limits = f;
     bind_member<std::vector<int>>(
         f, std::move(member),
-        [name](std::string_view v, std::vector<int>& out, std::string& error) {
+        [name, empty_text](std::string_view v, std::vector<int>& out, std::string& error) {
+            if (!empty_text.empty() && v == empty_text)
+                return true;
             for (std::string_view item : split_list(v)) {
                 int x = 0;
                 if (!parse_int32(item, x)) {
@@ -483,17 +487,22 @@ OptionField integers_field(std::string name, int lo, int hi, bool odd, size_t ma
                         (!several              ? std::string("not")
                                 : item.empty() ? std::string("an empty value is not")
                                                : std::string(item) + " is not")
-                            + " an integer (expected e.g. 9,7,5)");
+                            + " an integer (expected e.g. 9,7,5"
+                            + (empty_text.empty() ? "" : " or " + empty_text) + ")");
                     return false;
                 }
                 out.push_back(x);
             }
             return true;
         },
-        [](const std::vector<int>& v) { return format_int_list(v); },
+        [empty_text](const std::vector<int>& v) {
+            return v.empty() && !empty_text.empty() ? empty_text : format_int_list(v);
+        },
         [limits, lo, hi, odd](
             const std::vector<int>& v, std::string_view shown, std::string& error) {
             if (v.empty()) {
+                if (!limits.none.empty())
+                    return true;
                 error = option_error(limits.name, shown, "needs at least one value");
                 return false;
             }

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// What the sample's structure tells the patch method: its feature size (which sets the
-// number of levels) and the automatic guidance channel of Kaspar et al. 2015 §4.2 (the
-// distance transform of a feature mask), here the distance to the sample's strong edges.
+// The automatic guidance channel of Kaspar et al. 2015 §4.2 (the distance transform of a
+// feature mask), here the distance to the sample's strong edges.
 #include "patch_pvt.h"
 
 #include <algorithm>
@@ -84,49 +83,6 @@ void scale_like_colour(Plane& plane, const std::vector<Plane>& colour)
     const double scale = var > 0.0 ? colour_sd / std::sqrt(var) : 0.0;
     for (size_t i = 0; i < plane.size(); ++i)
         plane.data()[i] = float((plane.data()[i] - mean) * scale);
-}
-
-int feature_size(const std::vector<Plane>& colour)
-{
-    // Measured on a reduced copy of a large sample (the shifts cost its side per pixel).
-    Plane l = luminance(colour);
-    int scale = 1;
-    while (std::min(l.width(), l.height()) > 256) {
-        l = reduce_plane(l, Boundary::Reflect);
-        scale *= 2;
-    }
-    const int w = l.width(), h = l.height();
-    double mean = 0.0, var = 0.0;
-    plane_moments(l, mean, var);
-    const int cap = std::max(1, std::min(w, h) / 4);
-    if (var <= 0.0)
-        return scale;
-    // Along (dx, dy): the period, where the normalised autocorrelation, once below 1/2,
-    // peaks again above 0.15 (tiles, bricks, weave); else the shift where it first falls
-    // below 1/2 (the size of a stochastic texture's blobs).
-    auto crossing = [&](int dx, int dy) {
-        int below = 0;
-        double previous = 1.0;
-        bool falling = true;
-        for (int d = 1; d <= cap; ++d) {
-            double sum = 0.0;
-            size_t count = 0;
-            for (int y = 0; y + d * dy < h; ++y)
-                for (int x = 0; x + d * dx < w; ++x) {
-                    sum += (l(x, y) - mean) * (l(x + d * dx, y + d * dy) - mean);
-                    ++count;
-                }
-            const double r = sum / double(count) / var;
-            if (!below && r < 0.5)
-                below = d;
-            if (below && !falling && r < previous && previous > 0.15)
-                return d - 1; // the previous shift was a peak
-            falling = below ? r < previous : true;
-            previous = r;
-        }
-        return below ? below : cap;
-    };
-    return std::max(crossing(1, 0), crossing(0, 1)) * scale;
 }
 
 Plane guidance_channel(const std::vector<Plane>& colour, int feature_size)

@@ -7,9 +7,10 @@
 
 namespace texsyn::detail {
 
-PixelImage interleave_padded(
-    const std::vector<Plane>& planes, int pad, int nthreads, Boundary boundary)
+PixelImage interleave_padded(const std::vector<Plane>& planes, int pad, int nthreads, Wrap wrap)
 {
+    const Boundary bx = wrap.x ? Boundary::Circular : Boundary::Reflect;
+    const Boundary by = wrap.y ? Boundary::Circular : Boundary::Reflect;
     PixelImage out;
     const int w = planes.at(0).width(), h = planes.at(0).height(), c = int(planes.size());
     out.width = w + 2 * pad;
@@ -19,10 +20,10 @@ PixelImage interleave_padded(
     OIIO::parallel_for(
         0, out.height,
         [&](int64_t y) {
-            const int sy = wrap_coordinate(int(y) - pad, h, boundary);
+            const int sy = wrap_coordinate(int(y) - pad, h, by);
             float* row = out.pixel(0, int(y));
             for (int x = 0; x < out.width; ++x) {
-                const int sx = wrap_coordinate(x - pad, w, boundary);
+                const int sx = wrap_coordinate(x - pad, w, bx);
                 for (int k = 0; k < c; ++k)
                     row[size_t(x) * size_t(c) + size_t(k)] = planes[size_t(k)](sx, sy);
             }

@@ -53,6 +53,7 @@ struct Pass {
     float unit, free_uses;
     uint64_t seed, stream;
     const std::vector<uint8_t>* active; // null = every pixel
+    Wrap wrap;
 };
 
 // One row of a pass: each pixel's best of its current source, its neighbours' (at the
@@ -93,6 +94,9 @@ void search_row(const Pass& pass, int y)
         static const int dirs[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
         for (const auto& dir : dirs) {
             const int dx = dir[0] * pass.step, dy = dir[1] * pass.step;
+            if ((!pass.wrap.x && (x + dx < 0 || x + dx >= w))
+                || (!pass.wrap.y && (y + dy < 0 || y + dy >= h)))
+                continue; // no neighbour across an edge that does not wrap
             const uint32_t s
                 = field.source[size_t(wrap(y + dy, h)) * size_t(w) + size_t(wrap(x + dx, w))];
             consider(range.clamp(int(s % uint32_t(sw)) - dx, int(s / uint32_t(sw)) - dy));
@@ -185,7 +189,7 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
         }
         const Pass context { &sample, &padded, pad, settings.patch, step, radius0, range, &field,
             &next, &similar, k, &uses, unit, free_uses, settings.seed, settings.stream * 16 + pass,
-            settings.active };
+            settings.active, settings.wrap };
         OIIO::parallel_for(
             0, nblocks,
             [&](int64_t b) {

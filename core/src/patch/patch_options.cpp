@@ -6,6 +6,7 @@
 
 #include "methods/common_options_pvt.h"
 #include "patch_options_pvt.h"
+#include "patch_schedule_pvt.h"
 
 namespace texsyn {
 
@@ -24,7 +25,9 @@ const OptionTable<PatchOptions>& PatchOptions::table()
              "Gaussian pyramid levels, synthesized coarse to fine; 0 = from the sample's "
              "feature size (its features about one patch wide at the coarsest level)")
             .shared();
-        detail::add_patch_schedule(t, kMaxLevels);
+        detail::add_patch_schedule(t, kMaxLevels,
+            "11,7 (smaller for a sample or output under 33 px)",
+            "1 at the finest level, 3 at the next, 8 at the coarser ones");
         t.real("repetition", &O::repetition, 0.0f, 10.0f,
             "spatial-uniformity penalty: a source patch used more than an even use of the "
             "sample would use it costs more (spreads the result over the whole sample); 0 = "
@@ -36,26 +39,31 @@ const OptionTable<PatchOptions>& PatchOptions::table()
         t.integer("isotropic", &O::isotropic, 0, 1,
             "1 = patches may also come from the sample rotated and mirrored (8 variants if "
             "square, else 4); 0 = the sample's orientation is kept");
+        detail::add_flatten(t);
+        t.choice("wrap", &O::wrap,
+            { { "both", PatchWrap::Both }, { "x", PatchWrap::X }, { "y", PatchWrap::Y },
+                { "none", PatchWrap::None } },
+            "the axes the result tiles along: both, x (a strip that repeats sideways: a trim "
+            "sheet), y, or none (edges like a photograph's)");
     });
 }
 
 bool PatchOptions::validate(std::string& error) const
 {
     return table().check(*this, error)
-        && detail::check_patch_schedule(
-            patch, iterations, PatchOptions().iterations, levels, error);
+        && detail::check_patch_schedule(patch, iterations, levels, error);
 }
 
 namespace detail {
 
 bool check_patch_schedule(const std::vector<int>& patch, const std::vector<int>& iterations,
-    const std::vector<int>& default_iterations, int levels, std::string& error)
+    int levels, std::string& error)
 {
     if (!std::is_sorted(patch.rbegin(), patch.rend())) {
         error = option_error("patch", format_int_list(patch), "list the sizes largest first");
         return false;
     }
-    return levels == 0 || iterations == default_iterations
+    return levels == 0 || iterations.empty()
         || check_level_list(
             "iterations", format_int_list(iterations), iterations.size(), levels, error);
 }
@@ -64,6 +72,8 @@ bool check_patch_schedule(const std::vector<int>& patch, const std::vector<int>&
 
 int PatchOptions::iterations_at(int level) const
 {
+    if (iterations.empty())
+        return detail::automatic_iterations(level, std::max(levels, level + 1));
     return at_level(iterations, level, 1);
 }
 
@@ -84,7 +94,7 @@ size_t patch_memory_estimate(int sample_width, int sample_height, int nchannels,
     // k-coherence: the patch vectors of the finest level's smallest patch or the next
     // level's largest, and their kd-tree.
     const double small = opt.patch.empty() ? 7.0 : double(opt.patch.back());
-    const double large = opt.patch.empty() ? 7.0 : double(opt.patch.front());
+    const double large = opt.patch.empty() ? 11.0 : double(opt.patch.front());
     const double vectors = opt.coherence > 1
         ? std::max(sample * small * small, sample / 4.0 * large * large) * c * 4.0
             + sample * (4.0 * double(opt.coherence) + 40.0)

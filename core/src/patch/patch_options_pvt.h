@@ -11,16 +11,26 @@
 
 namespace texsyn::detail {
 
-/// "patch" and "iterations". T has std::vector<int> members patch and iterations.
+/// "patch" and "iterations", both "auto" by default (the method chooses them from the
+/// sample: `auto_patch` and `auto_iterations` say how). T has std::vector<int> members
+/// patch and iterations.
 template <class T>
-void add_patch_schedule(OptionTable<T>& t, int max_levels)
+void add_patch_schedule(
+    OptionTable<T>& t, int max_levels, const char* auto_patch, const char* auto_iterations)
 {
     t.odd_integers("patch", &T::patch, 3, 33, 4,
-        "patch sizes (odd), largest first: each level optimizes with each in turn, the "
-        "finest with the last only");
+        (std::string("patch sizes (odd), largest first: each level optimizes with each in turn, "
+                     "the finest with the last only; auto = ")
+            + auto_patch)
+            .c_str(),
+        "auto");
     t.integers("iterations", &T::iterations, 1, 50, max_levels,
-        "EM iterations (search, then vote) per patch size, per level, finest first (one "
-        "value = every level; coarser levels missing from the list repeat the last)");
+        (std::string("EM iterations (search, then vote) per patch size, per level, finest "
+                     "first (one value = every level; coarser levels missing from the list "
+                     "repeat the last); auto = ")
+            + auto_iterations)
+            .c_str(),
+        "auto");
 }
 
 /// "coherence" and "vote". T has members int coherence and PatchVote vote.
@@ -36,10 +46,8 @@ void add_patch_terms(OptionTable<T>& t)
 }
 
 /// The rules between the schedule's options: patch sizes largest first, and (levels > 0)
-/// no more iteration values than levels, unless `iterations` is still `default_iterations`
-/// (a default written for more levels than were asked for: its values past `levels` go
-/// unused, as with levels=0). False with a message naming the option.
+/// no more iteration values than levels. False with a message naming the option.
 bool check_patch_schedule(const std::vector<int>& patch, const std::vector<int>& iterations,
-    const std::vector<int>& default_iterations, int levels, std::string& error);
+    int levels, std::string& error);
 
 } // namespace texsyn::detail

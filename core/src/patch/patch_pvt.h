@@ -30,14 +30,23 @@ struct PixelImage {
     }
 };
 
+/// Which axes of an output wrap around (the output is periodic along them): patches there
+/// overlap the opposite edge. Along an axis that does not wrap, only patches centred inside
+/// the output overlap a pixel, and a patch centred near the edge reads the output
+/// reflected.
+struct Wrap {
+    bool x = true, y = true;
+    static Wrap none() { return { false, false }; }
+};
+
 /// `planes` interleaved.
 PixelImage interleave(const std::vector<Plane>& planes, int nthreads);
 
-/// `planes` interleaved with a margin of `pad` pixels on every side, circular (the torus)
-/// or reflected at the edges (`boundary`): pixel (x, y) is at (x + pad, y + pad), so a patch
-/// centred anywhere reads no wrap.
-PixelImage interleave_padded(const std::vector<Plane>& planes, int pad, int nthreads,
-    Boundary boundary = Boundary::Circular);
+/// `planes` interleaved with a margin of `pad` pixels on every side, circular along the
+/// axes that `wrap` and reflected along the others: pixel (x, y) is at (x + pad, y + pad),
+/// so a patch centred anywhere reads no wrap.
+PixelImage interleave_padded(
+    const std::vector<Plane>& planes, int pad, int nthreads, Wrap wrap = Wrap());
 
 /// One level of the sample, as the search and the vote read it.
 struct SampleLevel {
@@ -120,6 +129,7 @@ struct MatchSettings {
     int radius = 0; ///< the random search's first radius; 0 = the sample's larger side
     uint64_t seed = 0, stream = 0;
     int nthreads = 0;
+    Wrap wrap; ///< propagation reaches across the output's edges along the axes that wrap
     /// Once set (stop.h), the row blocks and passes not yet started are skipped: the
     /// field is then unspecified and the caller checks the flag.
     const StopFlag* stop = nullptr;
@@ -161,17 +171,17 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
 
 /// The vote: every output pixel the weighted average of the `patch` x `patch` source
 /// patches that overlap it, channel by channel, into `out` (planes of the field's size,
-/// sample.pixels.channels of them). `circular`: the output is a torus; otherwise only
-/// patches centred inside it overlap a pixel. Once `stop` is set (stop.h) the rows not yet
-/// started are skipped, leaving `out` unspecified: the caller checks the flag.
+/// sample.pixels.channels of them); `wrap` says along which axes patches overlap the
+/// opposite edge. Once `stop` is set (stop.h) the rows not yet started are skipped, leaving
+/// `out` unspecified: the caller checks the flag.
 void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVote kind,
-    int nthreads, const StopFlag* stop, std::vector<Plane>& out, bool circular = true);
+    int nthreads, const StopFlag* stop, std::vector<Plane>& out, Wrap wrap = Wrap());
 
 /// Per output pixel, the sample pixel (index y * width + x) of those its overlapping patches
-/// voted for that is nearest (over every channel) to `average` (the vote's result);
-/// `circular` and `stop` as for vote().
+/// voted for that is nearest (over every channel) to `average` (the vote's result); `wrap`
+/// and `stop` as for vote().
 std::vector<uint32_t> nearest_votes(const SampleLevel& sample, const PatchField& field, int patch,
-    const std::vector<Plane>& average, int nthreads, const StopFlag* stop, bool circular = true);
+    const std::vector<Plane>& average, int nthreads, const StopFlag* stop, Wrap wrap = Wrap());
 
 /// The mean and variance of a plane's values.
 void plane_moments(const Plane& plane, double& mean, double& variance);
@@ -186,18 +196,13 @@ void scale_like_colour(Plane& plane, const std::vector<Plane>& colour);
 /// deviation.
 Plane guidance_channel(const std::vector<Plane>& colour, int feature_size);
 
-/// The sample's feature size in pixels: the shortest shift, along x or y, at which the
-/// luminance's autocorrelation falls below 1/2, taking the larger of the two directions
-/// (capped at a quarter of the sample's side).
-int feature_size(const std::vector<Plane>& colour);
-
 /// The fraction of a sample of `npixels` pixels that `source` (sample indices) copies.
 double used_fraction(const std::vector<uint32_t>& source, size_t npixels);
 
-/// The largest connected region of a width x height output (circular, 4-connected) whose
-/// neighbours copy neighbouring pixels of a sample_width x sample_height sample (a verbatim
-/// copy), in pixels.
+/// The largest connected region of a width x height output (4-connected, across the edges
+/// along the axes that wrap) whose neighbours copy neighbouring pixels of a sample_width x
+/// sample_height sample (a verbatim copy), in pixels.
 size_t largest_copy(const std::vector<uint32_t>& source, int width, int height, int sample_width,
-    int sample_height);
+    int sample_height, bool wrap_x = true, bool wrap_y = true);
 
 } // namespace texsyn::detail

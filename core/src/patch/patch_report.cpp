@@ -42,8 +42,8 @@ double used_fraction(const std::vector<uint32_t>& source, size_t npixels)
     return double(std::count(used.begin(), used.end(), 1)) / double(npixels);
 }
 
-size_t largest_copy(
-    const std::vector<uint32_t>& source, int width, int height, int sample_width, int sample_height)
+size_t largest_copy(const std::vector<uint32_t>& source, int width, int height, int sample_width,
+    int sample_height, bool wrap_x, bool wrap_y)
 {
     // Neighbours copy neighbours: the right neighbour holds the next sample pixel of the
     // same row, the one below the pixel of the next sample row.
@@ -54,9 +54,10 @@ size_t largest_copy(
             const uint32_t s = source[q];
             const uint32_t right = uint32_t(y) * uint32_t(width) + uint32_t((x + 1) % width);
             const uint32_t below = uint32_t((y + 1) % height) * uint32_t(width) + uint32_t(x);
-            if (int(s % uint32_t(sample_width)) + 1 < sample_width && source[right] == s + 1)
+            if ((wrap_x || x + 1 < width) && int(s % uint32_t(sample_width)) + 1 < sample_width
+                && source[right] == s + 1)
                 sets.join(q, right);
-            if (int(s / uint32_t(sample_width)) + 1 < sample_height
+            if ((wrap_y || y + 1 < height) && int(s / uint32_t(sample_width)) + 1 < sample_height
                 && source[below] == s + uint32_t(sample_width))
                 sets.join(q, below);
         }

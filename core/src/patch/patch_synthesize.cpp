@@ -6,12 +6,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include <texsyn/feature_scale.h>
+#include <texsyn/homogeneity.h>
 #include <texsyn/pyramid.h>
 #include <texsyn/random.h>
 
 #include "methods/method_helpers_pvt.h"
 #include "methods/source_map_pvt.h"
 #include "patch_pvt.h"
+#include "patch_schedule_pvt.h"
 
 namespace texsyn {
 
@@ -58,41 +61,44 @@ int levels_that_fit(int sw, int sh, int w, int h, int wanted, const PatchOptions
     return wanted;
 }
 
-// The levels to synthesize: opt.levels, or the automatic choice (the coarsest level shrinks
-// the sample's features to about the largest patch; at least 2 levels when they fit).
-// False with a message if the sample or output is too small.
-bool choose_levels(int sw, int sh, int w, int h, int feature, const PatchOptions& opt, int& levels,
-    std::string& error)
+// The options as they run: the patch sizes, levels and iterations that are automatic
+// chosen (patch_schedule_pvt.h; `reason` says how the levels were), and given levels
+// checked against the sample's and output's sizes. False with a message if the sample or
+// output is too small.
+bool resolve_schedule(int sw, int sh, int w, int h, const FeatureScale& scale, PatchOptions& o,
+    std::string& reason, std::string& error)
 {
-    const int largest = opt.patch.front();
-    if (opt.levels == 0) {
-        // A feature of a quarter of the sample at least: the coarsest level then sees the
-        // sample's layout (courses, the tile grid, clusters of flowers) even when its
-        // texture is fine.
-        const double ratio = std::max(double(feature), std::min(sw, sh) / 4.0) / double(largest);
-        const int wanted = std::clamp(1 + int(std::ceil(std::log2(std::max(ratio, 1.0)))), 2, 8);
-        levels = std::max(1, levels_that_fit(sw, sh, w, h, wanted, opt));
-        if (std::min({ sw, sh, w, h }) >= opt.patch.back())
-            return true;
+    if (o.patch.empty())
+        o.patch = detail::automatic_patch_sizes(std::min({ sw, sh, w, h }));
+    if (o.levels == 0) {
+        const int wanted
+            = detail::automatic_levels(std::min(sw, sh), scale, o.patch.front(), reason);
+        o.levels = std::max(1, levels_that_fit(sw, sh, w, h, wanted, o));
+        if (o.levels < wanted)
+            reason += "; " + std::to_string(o.levels) + " fit the output";
     } else {
-        levels = opt.levels;
-        const int fit = levels_that_fit(sw, sh, w, h, levels, opt);
-        if (fit == levels)
-            return true;
-        if (fit > 0) {
-            error = "levels=" + std::to_string(levels) + " is too many for a " + size_text(sw, sh)
+        const int fit = levels_that_fit(sw, sh, w, h, o.levels, o);
+        if (fit > 0 && fit < o.levels) {
+            error = "levels=" + std::to_string(o.levels) + " is too many for a " + size_text(sw, sh)
                 + " sample and a " + size_text(w, h) + " output: level " + std::to_string(fit)
-                + " would be smaller than its " + std::to_string(patches_at(opt, fit).front())
+                + " would be smaller than its " + std::to_string(patches_at(o, fit).front())
                 + "-pixel patch (use levels=" + std::to_string(fit) + " or less)";
             return false;
         }
+        reason = std::to_string(o.levels) + " levels, as given";
     }
-    const int p = opt.patch.back();
-    error = std::min(sw, sh) < p
-        ? "the sample (" + size_text(sw, sh) + ") is smaller than the " + std::to_string(p)
-            + "-pixel patch (give a smaller patch=)"
-        : "size=" + size_text(w, h) + " is smaller than the " + std::to_string(p) + "-pixel patch";
-    return false;
+    const int p = o.patch.back();
+    if (std::min(sw, sh) < p || std::min(w, h) < p) {
+        error = std::min(sw, sh) < p ? "the sample (" + size_text(sw, sh) + ") is smaller than the "
+                + std::to_string(p) + "-pixel patch (give a smaller patch=)"
+                                     : "size=" + size_text(w, h) + " is smaller than the "
+                + std::to_string(p) + "-pixel patch";
+        return false;
+    }
+    if (o.iterations.empty())
+        for (int l = 0; l < o.levels; ++l)
+            o.iterations.push_back(detail::automatic_iterations(l, o.levels));
+    return true;
 }
 
 // The coarsest field: seeded random sources.
@@ -130,28 +136,34 @@ bool guide_plane(const OIIO::ImageBuf& guide, int sw, int sh, const std::vector<
     return true;
 }
 
-bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOptions& opt,
+bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOptions& given,
     OIIO::ImageBuf* source_map, const OIIO::ImageBuf* guide, PatchReport* report)
 {
     std::string error;
     PlanarImage in;
-    if (!detail::validated_sample(dst, sample, opt, in))
+    if (!detail::validated_sample(dst, sample, given, in))
         return false;
     auto fail = [&](const std::string& message) {
         dst.errorfmt("{}", message);
         return false;
     };
     const int sw = in.width(), sh = in.height();
-    const int w = opt.width ? opt.width : sw, h = opt.height ? opt.height : sh;
+    const int w = given.width ? given.width : sw, h = given.height ? given.height : sh;
     const std::vector<Plane> colour(in.channels.begin(), in.channels.begin() + in.ncolor());
-    const int feature = detail::feature_size(colour);
-    int levels = 0;
-    if (!choose_levels(sw, sh, w, h, feature, opt, levels, error)
+    const FeatureScale scale = estimate_feature_scale(in, given.nthreads);
+    PatchOptions opt = given;
+    opt.width = w;
+    opt.height = h;
+    std::string schedule;
+    if (!resolve_schedule(sw, sh, w, h, scale, opt, schedule, error)
         || !detail::check_memory(patch_memory_estimate(sw, sh, in.nchannels(), w, h, opt),
             "size=" + size_text(w, h), error))
         return fail(error);
     if (guide && opt.guidance <= 0.0f)
         return fail("guidance=0 : a guide needs a guidance weight above 0");
+    const int levels = opt.levels;
+    const detail::Wrap wrap { opt.wrap == PatchWrap::Both || opt.wrap == PatchWrap::X,
+        opt.wrap == PatchWrap::Both || opt.wrap == PatchWrap::Y };
 
     // The planes synthesized: the sample's, then the guidance channel (weighted).
     std::vector<Plane> planes = in.channels;
@@ -161,7 +173,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
             if (!guide_plane(*guide, sw, sh, colour, g, error))
                 return fail(error);
         } else {
-            g = detail::guidance_channel(colour, feature);
+            g = detail::guidance_channel(colour, int(std::lround(scale.size)));
         }
         for (size_t i = 0; i < g.size(); ++i)
             g.data()[i] *= opt.guidance;
@@ -200,21 +212,33 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
     detail::CentreRange coarse_range;
     std::vector<Plane> out;
     SampleLevel level;
+    auto match_histograms = [&] {
+        for (size_t c = 0; c < out.size(); ++c) {
+            detail::throw_if_stopped(opt.stop);
+            match_histogram(out[c], level.histograms[c], HistogramMode::Exact, opt.nthreads);
+        }
+    };
     for (int l = levels - 1; l >= 0; --l) {
+        const bool coarsest = l == levels - 1;
         level = sample_at(l);
         const int lw = out_sizes[size_t(l)].first, lh = out_sizes[size_t(l)].second;
         const std::vector<int> patches = patches_at(opt, l);
         const detail::CentreRange first { level.pixels.width, level.pixels.height,
             patches.front() / 2, level.cell_width };
-        field = l == levels - 1 ? random_field(lw, lh, first, opt.seed)
-                                : detail::upsample_field(field, coarse_range, lw, lh, first);
+        field = coarsest ? random_field(lw, lh, first, opt.seed)
+                         : detail::upsample_field(field, coarse_range, lw, lh, first);
         coarse_range = first;
-        if (l == levels - 1) { // the vote of the random field
-            detail::vote(
-                level, field, patches.front(), PatchVote::Mean, opt.nthreads, opt.stop, out);
-        } else { // the coarser result, expanded (Kwatra et al. §4)
-            for (Plane& p : out)
-                p = expand_plane(p, lw, lh, Boundary::Circular, opt.nthreads);
+        // The start: the vote of the random field, or of the coarser level's matches carried
+        // to this level (its own, sharp pixels rather than the coarser result blurred up:
+        // the finer level then starts where the coarser one converged).
+        if (!coarsest && std::getenv("XP_NOUP")) {
+            for (Plane& pl : out)
+                pl = expand_plane(pl, lw, lh, Boundary::Circular, opt.nthreads);
+        } else {
+            detail::vote(level, field, patches.front(), coarsest ? PatchVote::Mean : opt.vote,
+                opt.nthreads, opt.stop, out, wrap);
+            if (!coarsest)
+                match_histograms();
         }
         // k-coherence where the layout forms (the lists of the level's largest patch serve
         // its smaller ones); the finest level refines its coarser level's field with
@@ -232,29 +256,27 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
                 s = range.clamp(int(s % uint32_t(range.width)), int(s / uint32_t(range.width)));
             for (int it = 0; it < opt.iterations_at(l); ++it) {
                 const detail::PixelImage padded
-                    = detail::interleave_padded(out, p / 2, opt.nthreads);
+                    = detail::interleave_padded(out, p / 2, opt.nthreads, wrap);
                 detail::MatchSettings match;
                 match.patch = p;
                 match.coherence = opt.coherence;
                 match.repetition = opt.repetition;
-                // The coarsest level lays the texture out (jump-flood passes spread the
-                // first matches of each patch size far); finer levels start from it and
-                // search near it.
-                match.steps = l == levels - 1 && it == 0 ? std::vector<int> { 4, 2, 1 }
-                                                         : std::vector<int> { 1 };
-                match.radius = l == levels - 1 ? 0 : kFineRadius;
+                // The coarsest level lays the texture out with its largest patch: jump-flood
+                // passes every iteration spread good matches far, so that its matches grow
+                // coherent before the votes smooth it. Finer levels, and smaller patches,
+                // start from that layout and search near it.
+                match.steps
+                    = coarsest && pi == 0 ? std::vector<int> { 4, 2, 1 } : std::vector<int> { 1 };
+                match.radius = coarsest ? 0 : kFineRadius;
                 match.seed = opt.seed;
                 match.stream = (uint64_t(l) * 8 + pi) * 64 + uint64_t(it);
                 match.nthreads = opt.nthreads;
                 match.stop = opt.stop;
+                match.wrap = wrap;
                 detail::patch_match(level, padded, p / 2, similar, match, field);
                 detail::throw_if_stopped(opt.stop);
-                detail::vote(level, field, p, opt.vote, opt.nthreads, opt.stop, out);
-                for (size_t c = 0; c < out.size(); ++c) {
-                    detail::throw_if_stopped(opt.stop);
-                    match_histogram(
-                        out[c], level.histograms[c], HistogramMode::Exact, opt.nthreads);
-                }
+                detail::vote(level, field, p, opt.vote, opt.nthreads, opt.stop, out, wrap);
+                match_histograms();
                 done += double(lw) * double(lh);
                 detail::report_progress(opt.progress, opt.stop, float(done / total));
             }
@@ -265,7 +287,7 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
     // sample as given (a variant's pixel is one of the sample's).
     const int p = opt.patch.back();
     const std::vector<uint32_t> picked
-        = detail::nearest_votes(level, field, p, out, opt.nthreads, opt.stop);
+        = detail::nearest_votes(level, field, p, out, opt.nthreads, opt.stop, wrap);
     detail::throw_if_stopped(opt.stop);
     std::vector<uint32_t> chosen(picked.size());
     std::vector<uint8_t> turns(picked.size());
@@ -281,19 +303,20 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
             result[c].data()[q] = in.channels[c].data()[chosen[q]];
     if (report) {
         report->levels = levels;
-        report->feature_size = feature;
+        report->scale = scale;
+        report->schedule = schedule;
         report->used_fraction = detail::used_fraction(chosen, size_t(sw) * size_t(sh));
-        report->largest_copy = detail::largest_copy(picked, w, h, level.pixels.width, sh);
+        report->largest_copy
+            = detail::largest_copy(picked, w, h, level.pixels.width, sh, wrap.x, wrap.y);
         report->largest_copy_fraction = double(report->largest_copy) / (double(sw) * double(sh));
     }
-    PatchOptions resolved = opt;
-    resolved.width = w;
-    resolved.height = h;
-    resolved.levels = levels;
     if (source_map)
         detail::write_source_map(
             *source_map, chosen, w, h, sw, sw, sh, opt.isotropic ? &turns : nullptr);
-    detail::write_synthesis(dst, std::move(result), in, sample, "patch", resolved, source_map);
+    detail::write_synthesis(dst, std::move(result), in, sample, "patch", opt, source_map);
+    if (wrap.x || wrap.y)
+        dst.specmod().attribute("wrapmodes",
+            std::string(wrap.x ? "periodic" : "black") + "," + (wrap.y ? "periodic" : "black"));
     return true;
 }
 

@@ -16,19 +16,19 @@ namespace {
 
 // Calls f(sample pixel index, weight index q) for the patch x patch patches over output
 // pixel (x, y): the patch centred at q = (x - dx, y - dy) puts its pixel (dx, dy) there.
-// Without `circular`, only patches centred inside the field.
+// Along an axis that does not wrap, only patches centred inside the field.
 template <class F>
 void for_each_vote(
-    const PatchField& field, int sample_width, int patch, int x, int y, bool circular, F&& f)
+    const PatchField& field, int sample_width, int patch, int x, int y, Wrap wrapping, F&& f)
 {
     const int half = patch / 2;
-    auto inside = [&](int i, int n) { return circular || (i >= 0 && i < n); };
+    auto inside = [](int i, int n, bool wraps) { return wraps || (i >= 0 && i < n); };
     for (int dy = -half; dy <= half; ++dy) {
-        if (!inside(y - dy, field.height))
+        if (!inside(y - dy, field.height, wrapping.y))
             continue;
         const size_t row = size_t(wrap(y - dy, field.height)) * size_t(field.width);
         for (int dx = -half; dx <= half; ++dx) {
-            if (!inside(x - dx, field.width))
+            if (!inside(x - dx, field.width, wrapping.x))
                 continue;
             const size_t q = row + size_t(wrap(x - dx, field.width));
             const uint32_t s = field.source[q];
@@ -40,7 +40,7 @@ void for_each_vote(
 } // namespace
 
 void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVote kind,
-    int nthreads, const StopFlag* stop, std::vector<Plane>& out, bool circular)
+    int nthreads, const StopFlag* stop, std::vector<Plane>& out, Wrap wrapping)
 {
     const int c = sample.pixels.channels, w = field.width, h = field.height;
     const size_t n = size_t(w) * size_t(h);
@@ -71,7 +71,7 @@ void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVo
             // along a row of the field.
             std::vector<float> acc(size_t(w) * size_t(c), 0.0f), total(size_t(w), 0.0f);
             for (int dy = -half; dy <= half; ++dy) {
-                if (!circular && (int(y) - dy < 0 || int(y) - dy >= h))
+                if (!wrapping.y && (int(y) - dy < 0 || int(y) - dy >= h))
                     continue;
                 const uint32_t* src
                     = field.source.data() + size_t(wrap(int(y) - dy, h)) * size_t(w);
@@ -79,8 +79,8 @@ void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVo
                 for (int dx = -half; dx <= half; ++dx) {
                     const int shift = dy * sw + dx;
                     // Without wrap, the pixels whose patch centre x - dx is inside.
-                    const int x0 = circular ? 0 : std::max(0, dx);
-                    const int x1 = circular ? w : std::min(w, w + dx);
+                    const int x0 = wrapping.x ? 0 : std::max(0, dx);
+                    const int x1 = wrapping.x ? w : std::min(w, w + dx);
                     for (int x = x0; x < x1; ++x) {
                         const int q = wrap(x - dx, w);
                         const float* p = pixels + size_t(int(src[q]) + shift) * size_t(c);
@@ -102,7 +102,7 @@ void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVo
 }
 
 std::vector<uint32_t> nearest_votes(const SampleLevel& sample, const PatchField& field, int patch,
-    const std::vector<Plane>& average, int nthreads, const StopFlag* stop, bool circular)
+    const std::vector<Plane>& average, int nthreads, const StopFlag* stop, Wrap wrapping)
 {
     const int c = sample.pixels.channels, w = field.width, h = field.height;
     std::vector<uint32_t> chosen(size_t(w) * size_t(h));
@@ -117,7 +117,7 @@ std::vector<uint32_t> nearest_votes(const SampleLevel& sample, const PatchField&
                     mean[size_t(k)] = average[size_t(k)](x, int(y));
                 float best = std::numeric_limits<float>::infinity();
                 uint32_t pick = 0;
-                for_each_vote(field, sample.pixels.width, patch, x, int(y), circular,
+                for_each_vote(field, sample.pixels.width, patch, x, int(y), wrapping,
                     [&](uint32_t s, size_t) {
                         const float* p = sample.pixels.data.data() + size_t(s) * size_t(c);
                         float d = 0.0f;

@@ -25,9 +25,7 @@ const OptionTable<PyramidOptions>& PyramidOptions::table()
             "orientation-energy balance of each scale, finest first (steerable only): band k of "
             "K is scaled by 1 + b cos(2 pi k/K); b > 0 favours orientation 0 (vertical "
             "structure), b < 0 orientation K/2");
-        t.integer("flatten", &O::flatten, 0, 1,
-            "1 = divide the sample by its fitted lighting gradient before analysis "
-            "(see texsyn --check and docs/homogeneity.md)");
+        detail::add_flatten(t, "before analysis");
     });
 }
 

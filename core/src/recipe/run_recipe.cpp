@@ -183,8 +183,8 @@ bool recipe_spec(const Recipe& recipe, OIIO::ImageSpec& spec, std::string& error
     }
     if (!names.empty())
         spec.attribute("synth:sample", names);
-    if (layout.tiles)
-        spec.attribute("wrapmodes", "periodic,periodic");
+    if (!layout.wrapmodes().empty())
+        spec.attribute("wrapmodes", layout.wrapmodes());
     p.colors->tag_colorspace(spec, p.to);
     return true;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <texsyn/solid.h>
 
+#include "methods/common_options_pvt.h"
 #include "pyramid_synthesis/pyramid_synthesis_pvt.h"
 
 namespace texsyn {
@@ -28,6 +29,7 @@ const OptionTable<SolidOptions>& SolidOptions::table()
             "block's smallest side >= 8 px",
             "oriented bands per scale of the slices' steerable pyramids (combined only)");
         detail::add_matching_options(t);
+        detail::add_flatten(t, "before analysis");
     });
 }
 

@@ -162,6 +162,7 @@ bool synthesize(
     analysis.orientations = opt.orientations;
     analysis.histogram = opt.histogram;
     analysis.fft = opt.fft;
+    analysis.flatten = opt.flatten;
     analysis.nthreads = opt.nthreads;
     TextureStatistics lap, steer;
     if (!analyze_texture(sample, analysis, lap, error))

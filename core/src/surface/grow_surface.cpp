@@ -106,6 +106,8 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     if (!planes_from_imagebuf(sample, in, error))
         return false;
     const ChoosyOptions& opt = options.options;
+    if (opt.flatten)
+        flatten_illumination(in, opt.nthreads);
     if (!sample_fits_levels(in.width(), in.height(), opt.levels)) {
         error = "levels=" + std::to_string(opt.levels) + " is too many for the sample ("
             + std::to_string(in.width()) + "x" + std::to_string(in.height())

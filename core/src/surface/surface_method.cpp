@@ -82,7 +82,7 @@ bool surface_layout(const MethodOptions& options, const std::vector<InputLayout>
     layout.height = opt.bake_height;
     layout.depth = 1;
     layout.channelnames = inputs[0].channelnames;
-    layout.tiles = false;
+    layout.set_tiles(false);
     return true;
 }
 

@@ -49,7 +49,7 @@ bool transfer_layout(const MethodOptions& options, const std::vector<InputLayout
     layout = layout_from_input(inputs[1], options);
     layout.width = inputs[0].width;
     layout.height = inputs[0].height;
-    layout.tiles = false;
+    layout.set_tiles(false);
     return true;
 }
 
