@@ -4,12 +4,15 @@
 // closer than push-pull interpolation (the baseline every compositor has); soft masks
 // blend; exclude= keeps regions out of the sources; the cost follows the holes; same seed,
 // same pixels at any thread count; bad masks are refused.
+#include <texsyn/fft.h>
 #include <texsyn/fill.h>
 #include <texsyn/homogeneity.h>
+#include <texsyn/source_map.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstring>
 #include <iostream>
 
@@ -17,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include "structure_metric.h"
 #include "test_metrics.h"
 #include "test_samples.h"
 
@@ -513,4 +517,277 @@ TEST(Tileable, SmallImagesWorkWithTheDefaultsOrSayWhatToChange)
         "its shorter side, 21): give a smaller patch= or band=");
     opt.options.patch = { 7, 5 };
     EXPECT_FALSE(make_tileable(linear_crop("grass.png", 64, 64), opt).has_error());
+}
+
+namespace {
+
+// A soft plate: the top-left 64x64 of a bundled sample enlarged 8 times (OIIO's resize),
+// as a photograph blown up for a matte painting is.
+OIIO::ImageBuf soft_plate(const char* name)
+{
+    return OIIO::ImageBufAlgo::resize(
+        linear_crop(name, 64, 64), "", 0.0f, OIIO::ROI(0, 512, 0, 512));
+}
+
+// A one-channel w x h mask: 1 in the box, optionally blurred by a `feather`-pixel box.
+OIIO::ImageBuf box_mask(int w, int h, OIIO::ROI box, int feather = 0)
+{
+    OIIO::ImageBuf mask(OIIO::ImageSpec(w, h, 1, OIIO::TypeFloat));
+    OIIO::ImageBufAlgo::fill(mask, { 1.0f }, box);
+    if (feather > 0)
+        mask = OIIO::ImageBufAlgo::convolve(
+            mask, OIIO::ImageBufAlgo::make_kernel("box", float(feather), float(feather)));
+    return mask;
+}
+
+// The outline measure: the mean luminance step between each filled pixel and its
+// kept 4-neighbours (across the mask's outline), in the result over the same in the image.
+double outline_step_ratio(
+    const OIIO::ImageBuf& filled, const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask)
+{
+    const Plane f = test::luminance_of(filled), o = test::luminance_of(image);
+    const int w = f.width(), h = f.height();
+    double sf = 0.0, so = 0.0;
+    for (int y = 1; y + 1 < h; ++y)
+        for (int x = 1; x + 1 < w; ++x) {
+            if (!(mask.getchannel(x, y, 0, 0) > 0.0f))
+                continue;
+            for (const auto& [dx, dy] : { std::pair { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } })
+                if (!(mask.getchannel(x + dx, y + dy, 0, 0) > 0.0f)) {
+                    sf += std::abs(f(x, y) - f(x + dx, y + dy));
+                    so += std::abs(o(x, y) - o(x + dx, y + dy));
+                }
+        }
+    return sf / so;
+}
+
+// The power spectrum (Hann-windowed, 3x3-smoothed, centred) of a square of `l`.
+std::vector<double> spectrum_of(const Plane& l, int x0, int y0, int n)
+{
+    std::string error;
+    const auto fft = RealFft2D::create(n, n, FftBackend::Kiss, error);
+    std::vector<float> v(size_t(n) * size_t(n));
+    double mean = 0.0;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            mean += l(x0 + x, y0 + y) / (double(n) * n);
+    const double pi = 3.14159265358979323846;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            v[size_t(y) * size_t(n) + size_t(x)]
+                = float((l(x0 + x, y0 + y) - mean) * (0.5 - 0.5 * std::cos(2 * pi * (x + 0.5) / n))
+                    * (0.5 - 0.5 * std::cos(2 * pi * (y + 0.5) / n)));
+    std::vector<std::complex<float>> s(fft->spectrum_size());
+    fft->forward(v.data(), s.data());
+    const int half = n / 2 + 1;
+    std::vector<double> p(size_t(n) * size_t(n));
+    for (int ky = 0; ky < n; ++ky)
+        for (int kx = 0; kx < n; ++kx) {
+            const int hx = kx < half ? kx : n - kx, hy = kx < half ? ky : (n - ky) % n;
+            p[size_t((ky + n / 2) % n) * size_t(n) + size_t((kx + n / 2) % n)]
+                = std::norm(s[size_t(hy) * size_t(half) + size_t(hx)]);
+        }
+    std::vector<double> smooth(p.size(), 0.0);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            for (int j = -1; j <= 1; ++j)
+                for (int i = -1; i <= 1; ++i)
+                    smooth[size_t(y) * size_t(n) + size_t(x)]
+                        += p[size_t((y + j + n) % n) * size_t(n) + size_t((x + i + n) % n)] / 9.0;
+    return smooth;
+}
+
+// A square's spectral peakiness: over rings of wavelengths from 4 pixels to a quarter of the
+// square, the largest power over the ring's median. A regular lattice is a line standing
+// far above its ring; texture spreads its energy round it.
+double peakiness(const Plane& l, int x0, int y0, int n)
+{
+    const std::vector<double> p = spectrum_of(l, x0, y0, n);
+    double worst = 0.0;
+    for (int k = 4; k <= n / 4; ++k) {
+        std::vector<double> ring;
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x)
+                if (int(std::lround(std::hypot(x - n / 2, y - n / 2))) == k)
+                    ring.push_back(p[size_t(y) * size_t(n) + size_t(x)]);
+        const double top = *std::max_element(ring.begin(), ring.end());
+        std::nth_element(ring.begin(), ring.begin() + std::ptrdiff_t(ring.size() / 2), ring.end());
+        worst = std::max(worst, top / std::max(ring[ring.size() / 2], 1e-30));
+    }
+    return worst;
+}
+
+// The lattice measure: the peakiness of a square inside the hole over the largest of four
+// squares around it (the plate's own lines: its resampling grid, a weave's period).
+double lattice_peak(const OIIO::ImageBuf& filled, OIIO::ROI hole)
+{
+    const Plane l = test::luminance_of(filled);
+    const int n = std::min(hole.width(), hole.height()) * 3 / 4;
+    const int cx = (hole.xbegin + hole.xend) / 2, cy = (hole.ybegin + hole.yend) / 2;
+    double around = 0.0;
+    for (const auto& [x0, y0] :
+        { std::pair { cx - n / 2, hole.ybegin - n }, { cx - n / 2, hole.yend },
+            { hole.xbegin - n, cy - n / 2 }, { hole.xend, cy - n / 2 } })
+        around = std::max(around, peakiness(l, x0, y0, n));
+    return peakiness(l, cx - n / 2, cy - n / 2, n) / around;
+}
+
+} // namespace
+
+// The soft-plate test: on a plate enlarged 8 times, the step across the mask's
+// outline is at most 1.5x the plate's own step there; and on a sharp plate.
+TEST(Fill, TheOutlineDoesNotShowOnSoftOrSharpPlates)
+{
+    struct Case {
+        OIIO::ImageBuf plate;
+        OIIO::ImageBuf mask;
+        const char* what;
+    };
+    const Case cases[] = {
+        { soft_plate("flowers.png"), box_mask(512, 512, OIIO::ROI(208, 304, 208, 304)), "soft" },
+        { soft_plate("pebbles.png"), box_mask(512, 512, OIIO::ROI(110, 390, 140, 360)),
+            "soft, object-sized" },
+        { linear_sample("bricks.png"), box_mask(256, 256, OIIO::ROI(100, 160, 100, 160)), "sharp" },
+        { linear_sample("rust.png"), box_mask(256, 256, OIIO::ROI(90, 170, 80, 150)), "sharp" },
+    };
+    for (const Case& c : cases) {
+        FillOptions opt = seeded(1);
+        const OIIO::ImageBuf filled = texture_fill(c.plate, c.mask, opt);
+        ASSERT_FALSE(filled.has_error()) << filled.geterror();
+        const double matched = outline_step_ratio(filled, c.plate, c.mask);
+        opt.outline = FillOutline::Copy;
+        const double copied
+            = outline_step_ratio(texture_fill(c.plate, c.mask, opt), c.plate, c.mask);
+        std::cout << c.what << ": outline step " << matched
+                  << " x the plate's (outline=copy: " << copied << ")\n";
+        EXPECT_LE(matched, 1.5) << c.what;
+    }
+}
+
+// No regular lattice inside a large or a feathered hole: the hole's spectrum holds no line
+// twice as prominent as the plate's around it; a lattice pasted into the hole (a 12-pixel
+// tile of the plate repeated) does.
+TEST(Fill, LargeAndFeatheredHolesHoldNoLattice)
+{
+    const OIIO::ROI hole(176, 336, 176, 336);
+    for (const char* name : { "flowers.png", "pebbles.png" }) {
+        const OIIO::ImageBuf plate = soft_plate(name);
+        const double own = lattice_peak(plate, hole); // a square of the plate among its own
+        for (int feather : { 0, 41 }) {
+            const OIIO::ImageBuf filled
+                = texture_fill(plate, box_mask(512, 512, hole, feather), seeded(1));
+            ASSERT_FALSE(filled.has_error()) << filled.geterror();
+            const double peak = lattice_peak(filled, hole);
+            std::cout << name << (feather ? " feathered" : "") << ": lattice peak " << peak
+                      << " (the plate's own " << own << ")\n";
+            EXPECT_LT(peak, 2.0) << name << " feather " << feather;
+        }
+        // The control: a 12x12 tile of the plate repeated over the hole.
+        OIIO::ImageBuf lattice = plate;
+        for (int y = hole.ybegin; y < hole.yend; ++y)
+            for (int x = hole.xbegin; x < hole.xend; ++x) {
+                float p[3];
+                plate.getpixel(240 + (x % 12), 240 + (y % 12), p);
+                lattice.setpixel(x, y, p);
+            }
+        EXPECT_GT(lattice_peak(lattice, hole), 2.0) << name;
+    }
+}
+
+// map= gives the fill's source map: applied to the image it gives the fill with
+// outline=copy; to another map aligned with the image (a material's height), the same
+// copies, blended by the mask.
+TEST(Fill, ItsSourceMapFillsAnotherMapWithTheSameCopies)
+{
+    const OIIO::ImageBuf image = linear_sample("bricks.png");
+    const OIIO::ImageBuf mask = box_mask(256, 256, OIIO::ROI(100, 160, 100, 160), 9);
+    FillOptions opt = seeded(1);
+    opt.outline = FillOutline::Copy;
+    OIIO::ImageBuf map;
+    const OIIO::ImageBuf filled = texture_fill(image, mask, opt, nullptr, nullptr, nullptr, &map);
+    ASSERT_FALSE(filled.has_error()) << filled.geterror();
+    ASSERT_EQ(map.nchannels(), 3);
+    EXPECT_EQ(map.spec().channel_name(2), "m");
+    const OIIO::ImageBuf again = apply_source_map(map, image);
+    ASSERT_FALSE(again.has_error()) << again.geterror();
+    double worst = 0.0;
+    for (int y = 0; y < 256; ++y)
+        for (int x = 0; x < 256; ++x)
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst,
+                    double(std::abs(again.getchannel(x, y, 0, c) - filled.getchannel(x, y, 0, c))));
+    EXPECT_LT(worst, 1e-6); // the blend's float rounding
+    // From a sample there is no one image to map to.
+    OIIO::ImageBuf none;
+    OIIO::ImageBuf from_sample = texture_fill(image, mask, opt, &image, nullptr, nullptr, &none);
+    EXPECT_TRUE(from_sample.has_error());
+    EXPECT_NE(from_sample.geterror().find("map= : a fill from sample="), std::string::npos);
+}
+
+namespace {
+
+// A region's structure at three scales: the mean squared luminance difference at shifts of
+// 1, 2 and 4 pixels (along x and y), i.e. the energy of its bands.
+std::array<double, 3> band_energies(const Plane& l, int x0, int y0, int w, int h)
+{
+    std::array<double, 3> e {};
+    for (int k = 0; k < 3; ++k) {
+        const int s = 1 << k;
+        double sum = 0.0;
+        size_t n = 0;
+        for (int y = y0; y + s < y0 + h; ++y)
+            for (int x = x0; x + s < x0 + w; ++x) {
+                sum += std::pow(l(x + s, y) - l(x, y), 2) + std::pow(l(x, y + s) - l(x, y), 2);
+                n += 2;
+            }
+        e[size_t(k)] = sum / double(n);
+    }
+    return e;
+}
+
+double band_distance(const std::array<double, 3>& a, const std::array<double, 3>& b)
+{
+    double d = 0.0;
+    for (size_t k = 0; k < 3; ++k)
+        d += std::abs(std::log(a[k] / b[k])) / 3.0;
+    return d;
+}
+
+} // namespace
+
+// The small-sample test: on samples of 128 px, the band --tileable changed has the
+// sample's band energies within 1.5x the spread of the untouched middle's own strips, and
+// the result tiles (seam ratio <= 1.1).
+TEST(Tileable, SmallSamplesGetABandLikeTheirMiddle)
+{
+    for (const char* name : { "marble_pink.png", "paper_crinkled.png", "stucco_yellow.png",
+             "leaves_autumn.png", "pebbles.png", "flowers.png", "wood_grain.png" }) {
+        SCOPED_TRACE(name);
+        const OIIO::ImageBuf sample = linear_crop(name, 128, 128);
+        TileableOptions opt;
+        opt.options.seed = 1;
+        TileableReport report;
+        const OIIO::ImageBuf tile = make_tileable(sample, opt, &report);
+        ASSERT_FALSE(tile.has_error()) << tile.geterror();
+        const Plane l = test::luminance_of(tile), s = test::luminance_of(sample);
+        const auto target = band_energies(s, 0, 0, 128, 128);
+        const int b = report.band, strip_h = 128 / 2 - b / 2 - b / 2;
+        // The changed band: the columns around the left/right seam (x < b/2 or >= 128 - b/2),
+        // rolled together, above the crossing with the horizontal band.
+        Plane band(b, strip_h);
+        for (int y = 0; y < strip_h; ++y)
+            for (int x = 0; x < b; ++x)
+                band(x, y) = l((x + 128 - b / 2) % 128, b / 2 + y);
+        const double in_band = band_distance(band_energies(band, 0, 0, b, strip_h), target);
+        // The middle's own strips of the same size, away from the band.
+        double middle = 0.0;
+        for (int x0 = b / 2 + 4; x0 + b <= 128 - b / 2 - 4; x0 += 8)
+            middle
+                = std::max(middle, band_distance(band_energies(l, x0, b / 2, b, strip_h), target));
+        std::cout << name << ": band " << b << " px, band energies off by " << in_band
+                  << " (the middle's strips up to " << middle << "), seam ratio "
+                  << test::seam_ratio(tile) << "\n";
+        EXPECT_LE(in_band, 1.5 * middle);
+        EXPECT_LE(test::seam_ratio(tile), 1.1);
+    }
 }

@@ -50,6 +50,9 @@ struct ChoosyOptions {
     /// 1: the sample's low-order lighting is divided out first (flatten_illumination,
     /// homogeneity.h); the result copies the flattened sample's pixels.
     int flatten = 0;
+    /// The result's features this many times as large as the sample's, 0.25..4: the sample
+    /// is resampled by it first (its source map then refers to the resampled sample).
+    float scale = 1.0f;
     ChoosySearch search = ChoosySearch::KdTree;
     int dims = 20; ///< kdtree: principal components kept (>= the vector size: all, exact)
     /// kdtree: nanoflann's approximation factor (0 = exact in PCA space). 30 was measured

@@ -99,16 +99,25 @@ struct FillReport {
 /// between 0 and 1 blends: (1 - m) x the image + m x the fill. Pixels where the mask is 0
 /// are the image's, bit-identical; an empty mask returns the image unchanged.
 ///
+/// `source_map`, if not null (a fill from the image itself, no sample), receives the fill's
+/// source map (source_map.h) with a fourth channel "m": every pixel's source (its own
+/// position where the mask is 0) and the mask's value, so that apply_source_map fills
+/// another map aligned with the image (a material's height, normal…) with the same copies,
+/// blended by the mask; without the outline's membrane, which each map's own pixels set.
+///
 /// Fails (false, message in dst) on invalid options; an image, mask, exclude or sample that
 /// has an error, NaN or Inf; a mask or exclude that is not one channel of the image's size;
 /// a sample whose channels differ from the image's; a mask that covers the whole image
-/// without a sample; or a context (or sample) with no patch of known pixels at some level.
+/// without a sample; a source map asked of a fill from a sample; or a context (or sample)
+/// with no patch of known pixels at some level.
 bool texture_fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
     const FillOptions& opt, const OIIO::ImageBuf* sample = nullptr,
-    const OIIO::ImageBuf* exclude = nullptr, FillReport* report = nullptr);
+    const OIIO::ImageBuf* exclude = nullptr, FillReport* report = nullptr,
+    OIIO::ImageBuf* source_map = nullptr);
 OIIO::ImageBuf texture_fill(const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
     const FillOptions& opt, const OIIO::ImageBuf* sample = nullptr,
-    const OIIO::ImageBuf* exclude = nullptr, FillReport* report = nullptr);
+    const OIIO::ImageBuf* exclude = nullptr, FillReport* report = nullptr,
+    OIIO::ImageBuf* source_map = nullptr);
 
 /// The axes make_tileable() makes an image tile along.
 enum class TileAxes { Both, X, Y };

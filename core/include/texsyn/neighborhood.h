@@ -65,6 +65,9 @@ struct NeighborhoodOptions {
     /// 1: the sample's low-order lighting is divided out first (flatten_illumination,
     /// homogeneity.h); the result copies the flattened sample's pixels.
     int flatten = 0;
+    /// The result's features this many times as large as the sample's, 0.25..4: the sample
+    /// is resampled by it first (its source map then refers to the resampled sample).
+    float scale = 1.0f;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.

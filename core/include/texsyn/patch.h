@@ -78,6 +78,9 @@ struct PatchOptions {
     /// The axes the result tiles along (trim sheets tile along one): along an axis that
     /// does not wrap, the result has edges like a photograph's.
     PatchWrap wrap = PatchWrap::Both;
+    /// The result's features this many times as large as the sample's, 0.25..4: the sample
+    /// is resampled by it first (its source map then refers to the resampled sample).
+    float scale = 1.0f;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.

@@ -32,7 +32,9 @@ struct ApplyMapOptions {
 
 /// Re-applies a synthesis to an image aligned with its sample (height, normal, roughness…
 /// maps of the same material): dst(x, y) = image(map(x, y)) for every channel, values
-/// copied exactly (normal maps: turned with the copy, see ApplyMapOptions).
+/// copied exactly (normal maps: turned with the copy, see ApplyMapOptions). A fill's map
+/// (fill.h: a last channel "m", the mask) blends: dst = (1 - m) image(x, y) + m
+/// image(map(x, y)), a blended normal made unit again.
 ///
 /// The image may be the sample's size, or a whole multiple k or fraction 1/k of it in both
 /// directions (a 2K height map for a 1K sample): coordinates are scaled, and the result is

@@ -30,6 +30,7 @@ const OptionTable<ChoosyOptions>& ChoosyOptions::table()
             "1 = also match the sample rotated and mirrored (8 orientations): isotropic "
             "variants of anisotropic samples; 0 = keep the sample's orientation");
         detail::add_flatten(t);
+        detail::add_scale(t);
         t.choice("search", &O::search,
             { { "exhaustive", ChoosySearch::Exhaustive }, { "kdtree", ChoosySearch::KdTree } },
             "exhaustive (every neighbourhood, full dimension, exact) or kdtree (principal "

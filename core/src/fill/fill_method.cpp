@@ -16,7 +16,7 @@ namespace {
 // The fill options and the files they name.
 struct FillWithFiles {
     FillOptions options;
-    std::string mask, exclude, sample;
+    std::string mask, exclude, sample, map;
 
     static const OptionTable<FillWithFiles>& table()
     {
@@ -33,6 +33,11 @@ struct FillWithFiles {
             t.file("sample", &O::sample, FileUse::ReadImage, "",
                 "fill from this image (the image's channels) instead of the image's own "
                 "unmasked pixels; needed when the mask covers the whole image");
+            t.file("map", &O::map, FileUse::Write, ".exr",
+                "also write the source map: the float OpenEXR of the pixel each pixel was "
+                "copied from (x, y; its own where the mask is 0) and the mask (m), which "
+                "--apply-map reuses on a map aligned with the image (a fill from the image "
+                "itself, not from sample=)");
         });
     }
     bool validate(std::string& error) const
@@ -68,15 +73,19 @@ bool run_fill(const MethodOptions& options, const std::vector<MethodInput>& inpu
         return it == files.end() ? nullptr : &it->second;
     };
     FillReport report;
+    OIIO::ImageBuf map;
+    const bool want_map = !given.map.empty() || settings.source_map;
     if (!texture_fill(result.image, *inputs[0].image, *file("mask"), opt, file("sample"),
-            file("exclude"), &report)) {
+            file("exclude"), &report, want_map ? &map : nullptr)) {
         error = result.image.geterror();
-        for (const char* name : { "mask", "exclude", "sample" })
+        for (const char* name : { "mask", "exclude", "sample", "map" })
             if (error.rfind(std::string(name) + ":", 0) == 0
                 || error.find(std::string("the ") + name) == 0)
                 error = option_error(name, options.value(name), error);
         return false;
     }
+    if (want_map)
+        result.files.emplace_back("map", std::move(map));
     result.notes = report_text(report);
     return true;
 }

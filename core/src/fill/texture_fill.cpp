@@ -12,6 +12,7 @@
 
 #include "fill_pvt.h"
 #include "methods/method_helpers_pvt.h"
+#include "methods/source_map_pvt.h"
 #include "patch/patch_schedule_pvt.h"
 
 namespace texsyn {
@@ -64,7 +65,7 @@ struct Region {
 
 bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
     const FillOptions& given, const OIIO::ImageBuf* sample, const OIIO::ImageBuf* exclude,
-    FillReport* report)
+    FillReport* report, OIIO::ImageBuf* source_map)
 {
     std::string error;
     auto fail = [&](const std::string& message) {
@@ -85,6 +86,9 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     if (!control_plane(mask, "mask", w, h, mask_plane, error)
         || (exclude && !control_plane(*exclude, "exclude mask", w, h, exclude_plane, error)))
         return fail(error);
+    if (sample && source_map)
+        return fail("map= : a fill from sample= copies from two images; its source map is "
+                    "written only for a fill from the image itself");
     PlanarImage from;
     if (sample) {
         if (!planes_from_imagebuf(*sample, from, error))
@@ -156,6 +160,11 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     }
     const OIIO::ImageBuf& copied_from = sample ? *sample : image;
     const int nc = in.nchannels();
+    // The source map: every pixel its own source until a region's copies say otherwise.
+    std::vector<uint32_t> sources(size_t(w) * size_t(h));
+    if (source_map)
+        for (size_t i = 0; i < sources.size(); ++i)
+            sources[i] = uint32_t(i);
     // The plate's finest detail sets how softly the copies fade in at the outline.
     const FeatureScale plate = estimate_feature_scale(in, opt.nthreads);
     const int rim = std::min(kMaxRim, int(plate.finest_size / 2.0));
@@ -188,6 +197,16 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
             sy = std::clamp(sy + dy, 0, sh - 1);
             copied_from.getpixel(sx + copied_from.xbegin(), sy + copied_from.ybegin(), out);
         };
+        if (source_map)
+            for (int y = r.crop.y0; y < r.crop.y1; ++y)
+                for (int x = r.crop.x0; x < r.crop.x1; ++x)
+                    if (mask_plane(x, y) > 0.0f) {
+                        const uint32_t s = result.copied[size_t(y - r.crop.y0) * size_t(cw)
+                            + size_t(x - r.crop.x0)];
+                        sources[size_t(y) * size_t(w) + size_t(x)]
+                            = uint32_t(int(s / uint32_t(cw)) + r.crop.y0) * uint32_t(w)
+                            + uint32_t(int(s % uint32_t(cw)) + r.crop.x0);
+                    }
         detail::compose_region(
             copies, mask_plane, opt.outline, rim, opt.nthreads, [&](int x, int y, const float* v) {
                 dst.setpixel(x + dst.xbegin(), y + dst.ybegin(), v);
@@ -200,8 +219,13 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
         report->levels = most_levels;
         report->work_pixels = work;
     }
-    detail::tag_synthesis(dst.specmod(), "fill", opt.seed, FillOptions::table().format(opt));
+    const std::string options = FillOptions::table().format(opt);
+    detail::tag_synthesis(dst.specmod(), "fill", opt.seed, options);
     dst.specmod().erase_attribute("wrapmodes");
+    if (source_map) {
+        detail::write_source_map(*source_map, sources, w, h, w, w, h, nullptr, &mask_plane);
+        detail::tag_synthesis(source_map->specmod(), "fill", opt.seed, options);
+    }
     return true;
 }
 
@@ -209,18 +233,18 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
 
 bool texture_fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
     const FillOptions& opt, const OIIO::ImageBuf* sample, const OIIO::ImageBuf* exclude,
-    FillReport* report)
+    FillReport* report, OIIO::ImageBuf* source_map)
 {
-    return detail::guarded(
-        dst, "texture_fill", [&] { return fill(dst, image, mask, opt, sample, exclude, report); });
+    return detail::guarded(dst, "texture_fill",
+        [&] { return fill(dst, image, mask, opt, sample, exclude, report, source_map); });
 }
 
 OIIO::ImageBuf texture_fill(const OIIO::ImageBuf& image, const OIIO::ImageBuf& mask,
     const FillOptions& opt, const OIIO::ImageBuf* sample, const OIIO::ImageBuf* exclude,
-    FillReport* report)
+    FillReport* report, OIIO::ImageBuf* source_map)
 {
     return detail::value_form("texture_fill", [&](OIIO::ImageBuf& dst) {
-        return texture_fill(dst, image, mask, opt, sample, exclude, report);
+        return texture_fill(dst, image, mask, opt, sample, exclude, report, source_map);
     });
 }
 

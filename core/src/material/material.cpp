@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include <texsyn/homogeneity.h>
 #include <texsyn/image.h>
 
 namespace texsyn {
@@ -108,12 +109,30 @@ bool run_material_method(const Method& method, const MethodOptions& options,
     const Material& material, const std::string& name, const OptionImages& files,
     RunSettings settings, MethodResult& result, std::string& error)
 {
+    // flatten=1 divides the lighting out of the albedo alone (the other maps hold numbers,
+    // not light): the set is flattened here, and the run searches and copies it as it is.
+    Material flattened;
+    const bool flatten = options.table().find("flatten") && options.value("flatten") == "1";
+    MethodOptions run_options = options;
+    if (flatten) {
+        flattened = material;
+        PlanarImage albedo;
+        if (!planes_from_imagebuf(flattened.maps[0].image, albedo, error))
+            return false;
+        flatten_illumination(albedo, settings.nthreads);
+        OIIO::ImageBuf image;
+        imagebuf_from_planes(albedo, image);
+        flattened.maps[0].image = std::move(image);
+        if (!run_options.set("flatten", "0", error))
+            return false;
+    }
+    const Material& set_in = flatten ? flattened : material;
     OIIO::ImageBuf search;
-    if (!material_search_image(material, search, error))
+    if (!material_search_image(set_in, search, error))
         return false;
     settings.source_map = true;
     if (!run_method(
-            method, options, { { &search, nullptr, name } }, files, settings, result, error))
+            method, run_options, { { &search, nullptr, name } }, files, settings, result, error))
         return false;
     const auto map = std::find_if(
         result.files.begin(), result.files.end(), [](const auto& f) { return f.first == "map"; });
@@ -122,8 +141,17 @@ bool run_material_method(const Method& method, const MethodOptions& options,
         return false;
     }
     auto set = std::make_shared<Material>();
-    if (!apply_material(map->second, material, *set, error))
+    if (!apply_material(map->second, set_in, *set, error))
         return false;
+    // Every map tiles as the run's result does (its wrapmodes, for .tx outputs and
+    // renderers).
+    const std::string wrapmodes = result.image.spec().get_string_attribute("wrapmodes");
+    for (MaterialMap& m : set->maps) {
+        if (wrapmodes.empty())
+            m.image.specmod().erase_attribute("wrapmodes");
+        else
+            m.image.specmod().attribute("wrapmodes", wrapmodes);
+    }
     result.image = set->maps[0].image;
     result.material = std::move(set);
     return true;

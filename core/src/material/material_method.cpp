@@ -3,6 +3,8 @@
 // the maps its options name join it. A copying method then synthesizes the whole material.
 #include <texsyn/material.h>
 
+#include <OpenImageIO/filesystem.h>
+
 #include "methods/method_helpers_pvt.h"
 
 namespace texsyn::detail {
@@ -103,6 +105,17 @@ bool run_material(const MethodOptions& options, const std::vector<MethodInput>& 
                 return i < opt.weights.size() ? opt.weights[i] : 1.0f;
         return 0.0f;
     };
+    // -v: how every map was read (the albedo as a sample: its colour space the tool
+    // reports; the others as their numbers) and what the search weighs.
+    std::string read;
+    auto describe = [&](const std::string& name, const std::string& file,
+                        const OIIO::ImageBuf& image, const std::string& how, float weight) {
+        const OIIO::ImageSpec& s = image.spec();
+        read += (read.empty() ? "" : "; ") + name + " " + OIIO::Filesystem::filename(file) + " ("
+            + std::to_string(s.width) + "x" + std::to_string(s.height) + ", "
+            + count_text(s.nchannels, "channel") + ") " + how + ", "
+            + (weight > 0.0f ? "searched" : "carried along");
+    };
     for (const auto& [name, which] : map_names()) {
         MaterialMap map;
         map.name = name;
@@ -110,11 +123,18 @@ bool run_material(const MethodOptions& options, const std::vector<MethodInput>& 
         if (which == MapName::Albedo) {
             map.kind = MapKind::Colour;
             map.image.copy(*inputs[0].image, OIIO::TypeFloat);
+            describe(name, inputs[0].name, *inputs[0].image, "colour managed to scene-linear",
+                map.weight);
         } else {
             const auto it = files.find(name);
             if (it == files.end())
                 continue;
             map.kind = which == MapName::Normal ? MapKind::Normal : MapKind::Data;
+            describe(name, *opt.file_of(which), it->second,
+                map.kind != MapKind::Normal             ? "read as its numbers"
+                    : opt.normals == NormalMap::DirectX ? "read as numbers, a DirectX normal map"
+                                                        : "read as numbers, an OpenGL normal map",
+                map.weight);
             map.image.copy(it->second, OIIO::TypeFloat);
             if (map.kind == MapKind::Normal && map.image.nchannels() < 3) {
                 error = option_error(name, *opt.file_of(which),
@@ -129,6 +149,7 @@ bool run_material(const MethodOptions& options, const std::vector<MethodInput>& 
     if (!material_search_image(*material, search, error))
         return false;
     result.material = std::move(material);
+    result.notes = read;
     return true;
 }
 

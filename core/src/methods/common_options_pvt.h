@@ -41,6 +41,19 @@ void add_flatten(OptionTable<T>& t, const char* what = "before it is read")
         .shared();
 }
 
+/// "scale": the copying methods' features k times larger (or smaller) than in the sample:
+/// the sample is resampled by k first (scale_sample). T has a float member scale.
+template <class T>
+void add_scale(OptionTable<T>& t)
+{
+    t.real("scale", &T::scale, 0.25f, 4.0f,
+         "the result's features this many times as large as the sample's (the sample is "
+         "resampled first: a texture at another texel density than the scan); the source "
+         "map then refers to the resampled sample, and --apply-map resamples a map of the "
+         "sample's size to match")
+        .shared();
+}
+
 /// "eps": the approximation factor of a kd-tree search, 0..100. T has a float member eps.
 template <class T>
 void add_kdtree_eps(OptionTable<T>& t)

@@ -2,10 +2,13 @@
 #include "method_helpers_pvt.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
 #include <unistd.h>
+
+#include <OpenImageIO/imagebufalgo.h>
 
 #include <texsyn/random.h>
 #include <texsyn/version.h>
@@ -47,6 +50,32 @@ void report_progress(
     throw_if_stopped(stop);
     if (progress)
         progress(fraction);
+}
+
+void scale_sample(PlanarImage& in, float k, int nthreads)
+{
+    if (k == 1.0f || in.channels.empty())
+        return;
+    const int w = std::max(1, int(std::lround(in.width() * double(k))));
+    const int h = std::max(1, int(std::lround(in.height() * double(k))));
+    PlanarImage plain = in;
+    plain.alpha_channel = -1; // resampled as they are: no association
+    OIIO::ImageBuf buf;
+    imagebuf_from_planes(plain, buf, false);
+    OIIO::ImageBuf resized;
+    if (!OIIO::ImageBufAlgo::resize(resized, buf, "", 0.0f, OIIO::ROI(0, w, 0, h), nthreads))
+        throw std::runtime_error("scale: " + resized.geterror());
+    std::vector<float> pixels(size_t(w) * size_t(h) * size_t(in.nchannels()));
+    resized.get_pixels(
+        OIIO::ROI(0, w, 0, h, 0, 1, 0, in.nchannels()), OIIO::TypeFloat, pixels.data());
+    for (int c = 0; c < in.nchannels(); ++c) {
+        const Plane& old = in.channels[size_t(c)];
+        const auto [lo, hi] = std::minmax_element(old.data(), old.data() + old.size());
+        Plane p(w, h);
+        for (size_t i = 0; i < p.size(); ++i)
+            p.data()[i] = std::clamp(pixels[i * size_t(in.nchannels()) + size_t(c)], *lo, *hi);
+        in.channels[size_t(c)] = std::move(p);
+    }
 }
 
 Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream)

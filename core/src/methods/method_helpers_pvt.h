@@ -68,9 +68,21 @@ struct has_flatten : std::false_type { };
 template <class T>
 struct has_flatten<T, std::void_t<decltype(std::declval<const T&>().flatten)>> : std::true_type { };
 
+/// Whether an options struct has a `scale` member (the copying methods' scale=).
+template <class T, class = void>
+struct has_scale : std::false_type { };
+template <class T>
+struct has_scale<T, std::void_t<decltype(std::declval<const T&>().scale)>> : std::true_type { };
+
+/// `in` resampled by `k` (OIIO's default filter for the direction), each channel clamped to
+/// the range it had, so that a copying method copies no value the sample does not hold:
+/// the sample as it would have been scanned at k times the texel density. k = 1: unchanged.
+void scale_sample(PlanarImage& in, float k, int nthreads);
+
 /// The start of every synthesis from one sample: opt.validate(), then the sample's planes
 /// (planes_from_imagebuf: a read error, NaN or Inf is refused), flattened
-/// (flatten_illumination) if the options have flatten=1. False with the message in dst.
+/// (flatten_illumination) if the options have flatten=1, and resampled (scale_sample) if
+/// they have a scale. False with the message in dst.
 template <class Options>
 bool validated_sample(
     OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const Options& opt, PlanarImage& in)
@@ -91,6 +103,8 @@ bool validated_sample(
     if constexpr (has_flatten<Options>::value)
         if (opt.flatten)
             flatten_illumination(in, opt.nthreads);
+    if constexpr (has_scale<Options>::value)
+        scale_sample(in, opt.scale, opt.nthreads);
     return true;
 }
 
@@ -117,6 +131,9 @@ void write_synthesis(OIIO::ImageBuf& dst, std::vector<Plane> channels, const Pla
     tag_synthesis(dst.specmod(), method, resolved.seed, options);
     if (source_map)
         tag_synthesis(source_map->specmod(), method, resolved.seed, options);
+    if constexpr (has_scale<Options>::value)
+        if (source_map && resolved.scale != 1.0f) // source_map.h: apply_source_map resamples
+            source_map->specmod().attribute("synth:sample_scale", resolved.scale);
 }
 
 /// The options struct of a registry row's options (a logic error, caught by run_method,

@@ -62,24 +62,76 @@ bool image_scale(int iw, int ih, int rw, int rh, Scale& scale)
     return false;
 }
 
-bool apply(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf& image,
+// `image` resampled as a scale= synthesis resampled its sample (scale_sample), a normal
+// map's vectors made unit again; into `out`. False with a message.
+bool rescaled(const OIIO::ImageBuf& image, float k, const ApplyMapOptions& opt, OIIO::ImageBuf& out,
+    std::string& error)
+{
+    PlanarImage planes;
+    if (!planes_from_imagebuf(image, planes, error))
+        return false;
+    detail::scale_sample(planes, k, 0);
+    if (opt.normal != NormalMap::None && planes.nchannels() >= 3)
+        for (size_t i = 0; i < planes.channels[0].size(); ++i) {
+            double n[3], len = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                n[c] = 2.0 * planes.channels[size_t(c)].data()[i] - 1.0;
+                len += n[c] * n[c];
+            }
+            len = std::sqrt(len);
+            for (int c = 0; c < 3 && len > 0.0; ++c)
+                planes.channels[size_t(c)].data()[i] = float(0.5 + 0.5 * n[c] / len);
+        }
+    imagebuf_from_planes(planes, out, false);
+    for (const OIIO::ParamValue& p : image.spec().extra_attribs)
+        if (p.name() == "oiio:UnassociatedAlpha" || p.name() == "oiio:ColorSpace")
+            out.specmod().attribute(p.name(), p.type(), p.data());
+    return true;
+}
+
+bool apply(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf& given,
     const ApplyMapOptions& opt)
 {
-    if (map.has_error() || image.has_error()) {
-        dst.errorfmt("{}", map.has_error() ? map.geterror() : image.geterror());
+    const OIIO::ImageBuf* source = &given;
+    OIIO::ImageBuf resampled;
+    if (map.has_error() || given.has_error()) {
+        dst.errorfmt("{}", map.has_error() ? map.geterror() : given.geterror());
         return false;
     }
     const OIIO::ImageSpec& ms = map.spec();
-    const bool turned = ms.nchannels == 3 && ms.channel_name(2) == "t";
-    if ((ms.nchannels != 2 && !turned) || ms.depth > 1) {
-        dst.errorfmt("the source map has {}; expected the channels x, y (and t) that "
-                     "--neighborhood:map=, --choosy:map= and --patch:map= write",
+    // x, y, then t (a turned copy) and m (a fill's mask) if present, in that order.
+    const bool turned = ms.nchannels >= 3 && ms.channel_name(2) == "t";
+    const int blend_channel
+        = ms.nchannels == 3 + int(turned) && ms.channel_name(2 + int(turned)) == "m"
+        ? 2 + int(turned)
+        : -1;
+    if (ms.nchannels != 2 + int(turned) + int(blend_channel >= 0) || ms.depth > 1) {
+        dst.errorfmt("the source map has {}; expected the channels x, y (and t, m) that "
+                     "--neighborhood:map=, --choosy:map=, --patch:map= and --fill:map= write",
             ms.depth > 1            ? "depth " + std::to_string(ms.depth)
                 : ms.nchannels == 3 ? "the channels " + std::string(ms.channel_name(0)) + ", "
                     + std::string(ms.channel_name(1)) + ", " + std::string(ms.channel_name(2))
                                     : detail::count_text(ms.nchannels, "channel"));
         return false;
     }
+    // A map of a scale= synthesis: an image of the sample's own size is resampled as the
+    // synthesis resampled its sample.
+    const float sample_scale = ms.get_float_attribute("synth:sample_scale", 1.0f);
+    if (sample_scale != 1.0f) {
+        int rw0 = 0, rh0 = 0;
+        std::sscanf(ms.get_string_attribute("synth:sample_size").c_str(), "%dx%d", &rw0, &rh0);
+        const int gw = given.spec().width, gh = given.spec().height;
+        if (std::lround(gw * double(sample_scale)) == rw0
+            && std::lround(gh * double(sample_scale)) == rh0) {
+            std::string error;
+            if (!rescaled(given, sample_scale, opt, resampled, error)) {
+                dst.errorfmt("{}", error);
+                return false;
+            }
+            source = &resampled;
+        }
+    }
+    const OIIO::ImageBuf& image = *source;
     const OIIO::ImageSpec& is = image.spec();
     const int iw = is.width, ih = is.height, nc = is.nchannels;
     if (opt.normal != NormalMap::None && nc < 3) {
@@ -110,6 +162,13 @@ bool apply(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf&
     }
     for (size_t i = 0; i < coords.size(); i += size_t(mc)) {
         const float x = coords[i], y = coords[i + 1], t = turned ? coords[i + 2] : 0.0f;
+        const float m = blend_channel >= 0 ? coords[i + size_t(blend_channel)] : 1.0f;
+        if (!(m >= 0.0f && m <= 1.0f)) {
+            const size_t p = i / size_t(mc);
+            dst.errorfmt("the source map's pixel ({}, {}) holds the blend m = {}: not in 0..1",
+                p % size_t(w), p / size_t(w), m);
+            return false;
+        }
         if (!(x >= 0.0f && x < float(rw) && y >= 0.0f && y < float(rh)) || x != std::floor(x)
             || y != std::floor(y) || !(t >= 0.0f && t <= 7.0f) || t != std::floor(t)) {
             const size_t p = i / size_t(mc);
@@ -160,6 +219,26 @@ bool apply(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf&
             std::copy_n(pixels.data() + (size_t(iy) * size_t(iw) + size_t(ix)) * size_t(nc), nc, o);
             if (opt.normal != NormalMap::None && t != 0)
                 turn_normal(o, t, opt.normal);
+            // A fill's blend: the copy over the image's own pixel (a fill's map is the
+            // image's size, and the result is the image's).
+            const float m = blend_channel >= 0 ? c[blend_channel] : 1.0f;
+            if (m < 1.0f && x < iw && y < ih) {
+                const float* own
+                    = pixels.data() + (size_t(y) * size_t(iw) + size_t(x)) * size_t(nc);
+                for (int ch = 0; ch < nc; ++ch)
+                    o[ch] = (1.0f - m) * own[ch] + m * o[ch];
+                if (opt.normal != NormalMap::None) { // a blend of unit vectors, made unit
+                    double n[3], len = 0.0;
+                    for (int i = 0; i < 3; ++i) {
+                        n[i] = 2.0 * o[i] - 1.0;
+                        len += n[i] * n[i];
+                    }
+                    len = std::sqrt(len);
+                    if (len > 0.0)
+                        for (int i = 0; i < 3; ++i)
+                            o[i] = float(0.5 + 0.5 * n[i] / len);
+                }
+            }
         }
     dst.set_pixels(OIIO::ROI(0, ow, 0, oh, 0, 1, 0, nc), OIIO::TypeFloat, out.data());
     return true;
@@ -171,7 +250,7 @@ namespace detail {
 
 void write_source_map(OIIO::ImageBuf& map, const std::vector<uint32_t>& source, int width,
     int height, int source_width, int sample_width, int sample_height,
-    const std::vector<uint8_t>* transforms)
+    const std::vector<uint8_t>* transforms, const Plane* blend)
 {
     PlanarImage m;
     m.channels = { Plane(width, height), Plane(width, height) };
@@ -185,6 +264,12 @@ void write_source_map(OIIO::ImageBuf& map, const std::vector<uint32_t>& source, 
         m.channel_names.push_back("t");
         std::transform(transforms->begin(), transforms->end(), m.channels[2].data(),
             [](uint8_t t) { return float(t); });
+    }
+    if (blend) {
+        m.channels.push_back(*blend);
+        m.channel_names.push_back("m");
+        for (size_t i = 0; i < m.channels.back().size(); ++i)
+            m.channels.back().data()[i] = std::clamp(m.channels.back().data()[i], 0.0f, 1.0f);
     }
     imagebuf_from_planes(m, map, false);
     map.specmod().erase_attribute("oiio:UnassociatedAlpha");

@@ -19,10 +19,12 @@ namespace texsyn::detail {
 /// `map` becomes a width x height float image with the channels "x", "y": pixel i holds the
 /// coordinates of source[i], an index y * source_width + x into the sample, and
 /// "synth:sample_size" = "<sample_width>x<sample_height>" (what apply_source_map checks);
-/// with `transforms` (per pixel, 0..7: source_map.h's M_t) a third channel "t" holds them.
+/// with `transforms` (per pixel, 0..7: source_map.h's M_t) a third channel "t" holds them,
+/// and with `blend` (a plane of the map's size, clamped to 0..1) a last channel "m" (a
+/// fill's mask: apply_source_map blends the copy over the image's own pixel by it).
 void write_source_map(OIIO::ImageBuf& map, const std::vector<uint32_t>& source, int width,
     int height, int source_width, int sample_width, int sample_height,
-    const std::vector<uint8_t>* transforms = nullptr);
+    const std::vector<uint8_t>* transforms = nullptr, const Plane* blend = nullptr);
 
 /// The options of a method that copies sample pixels (neighbourhood, choosy) with the
 /// source map it writes: map=FILE.exr, a file name, so not one of the method's options.

@@ -42,6 +42,7 @@ const OptionTable<NeighborhoodOptions>& NeighborhoodOptions::table()
             "1 = re-synthesize the pixels near the wrap-around seams with square neighbourhoods "
             "that see both sides, so the output tiles; 0 = Wei & Levoy's single pass");
         detail::add_flatten(t);
+        detail::add_scale(t);
         t.choice("shape", &O::shape,
             { { "causal", NeighborhoodShape::Causal }, { "square", NeighborhoodShape::Square } },
             "debug: causal (the L of already synthesized pixels) or square (unsynthesized noise "

@@ -45,6 +45,7 @@ const OptionTable<PatchOptions>& PatchOptions::table()
                 { "none", PatchWrap::None } },
             "the axes the result tiles along: both, x (a strip that repeats sideways: a trim "
             "sheet), y, or none (edges like a photograph's)");
+        detail::add_scale(t);
     });
 }
 

@@ -108,6 +108,7 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     const ChoosyOptions& opt = options.options;
     if (opt.flatten)
         flatten_illumination(in, opt.nthreads);
+    detail::scale_sample(in, opt.scale, opt.nthreads);
     if (!sample_fits_levels(in.width(), in.height(), opt.levels)) {
         error = "levels=" + std::to_string(opt.levels) + " is too many for the sample ("
             + std::to_string(in.width()) + "x" + std::to_string(in.height())
