@@ -119,7 +119,7 @@ TEST_F(Cli, BadChoosyRequestsAreRefused)
         "texsyn ERROR: --choosy : malformed option 'levels' (expected name=value)");
     expect_failure("stucco.png --choosy:n=9 -o out.exr",
         "texsyn ERROR: --choosy : n=9 : unknown option (known: size, levels, iterations, "
-        "penalty, isotropic, flatten, search, dims, eps, map)");
+        "penalty, isotropic, flatten, scale, search, dims, eps, map)");
     expect_failure("stucco.png --choosy:map=coords.png -o out.exr",
         "texsyn ERROR: --choosy : map=coords.png : name it *.exr");
     expect_failure("stucco.png --choosy:map=out.exr -o out.exr",

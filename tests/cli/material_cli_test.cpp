@@ -78,7 +78,7 @@ TEST_F(MaterialCli, WhatCannotBeAMaterialSetIsRefused)
         inputs);
     expect_failure("bricks.png --material:height=bricks_height.png --pyramid -o out_{map}.exr",
         "texsyn ERROR: --pyramid : the current item is a material set (from --material); "
-        "--neighborhood, --choosy and --patch synthesize one",
+        "--neighborhood, --choosy, --patch and --fill synthesize one",
         inputs);
     expect_failure("bricks.png --material:height=bricks_height.png --patch -o out_{map}.exr "
                    "--recipe m.texsyn",

@@ -118,8 +118,8 @@ TEST_F(Cli, BadApplyMapInputIsRefused)
         "texsyn ERROR: missing.exr: no such file", inputs);
     expect_failure("--apply-map out.exr stucco.png -o x.png",
         "texsyn ERROR: --apply-map out.exr stucco.png : the source map has the channels R, G, B; "
-        "expected the channels x, y (and t) that --neighborhood:map=, --choosy:map= and "
-        "--patch:map= write",
+        "expected the channels x, y (and t, m) that --neighborhood:map=, --choosy:map=, "
+        "--patch:map= and --fill:map= write",
         inputs);
     write_sample("small.png", 3, OIIO::TypeUInt8);
     ASSERT_EQ(shell("oiiotool small.png --resize 48x48 -o small48.png").status, 0);

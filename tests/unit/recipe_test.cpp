@@ -281,7 +281,7 @@ TEST(Recipe, ParsesNeighborhoodRecipes)
     EXPECT_EQ(r.seed, 5u);
     EXPECT_EQ(r.options.format(),
         "size=256x128:levels=4:n=9,7,5,5:coarse=3:search=exhaustive:candidates=4:dims=8:"
-        "eps=0.25:coherence=1:merge=0:tile=0:flatten=0:shape=square");
+        "eps=0.25:coherence=1:merge=0:tile=0:flatten=0:scale=1:shape=square");
     EXPECT_TRUE(r.validate(error)) << error;
     // A list as a string or as one number, as on the command line.
     ASSERT_TRUE(parse_recipe(
@@ -314,7 +314,8 @@ TEST(Recipe, ParsesChoosyRecipes)
         << error;
     EXPECT_EQ(r.method, "choosy");
     EXPECT_EQ(r.options.format(),
-        "size=256x128:levels=3:iterations=1,8:penalty=0.5:isotropic=0:flatten=0:search=exhaustive:"
+        "size=256x128:levels=3:iterations=1,8:penalty=0.5:isotropic=0:flatten=0:scale=1:"
+        "search=exhaustive:"
         "dims=12:"
         "eps=0.25");
     EXPECT_TRUE(r.validate(error)) << error;
