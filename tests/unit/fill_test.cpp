@@ -222,6 +222,14 @@ TEST(Fill, BricksHoleLooksLikeItsSurroundings)
                       original = quality(bricks, e);
     std::cout << "fill: " << ours << "\npush-pull: " << baseline << "\noriginal: " << original
               << "\n";
+    for (const auto& [name, q] :
+        { std::pair { "fill", ours }, { "pushpull", baseline }, { "original", original } }) {
+        test::doc_number(std::string("fill.bricks.") + name + ".w1", q.w1, 3);
+        for (int s = 0; s < 3; ++s)
+            test::doc_number(
+                std::string("fill.bricks.") + name + ".energy" + std::to_string(s), q.energy[s], 2);
+        test::doc_number(std::string("fill.bricks.") + name + ".seam", q.seam, 2);
+    }
     // Measured (seed 3): W1 0.021 against push-pull's 0.032; band energies 0.97, 0.95, 0.77
     // of the ring's (push-pull 0.03, 0.05, 0.15); seam 2.05, the original's 1.65.
     EXPECT_LT(ours.w1, 0.025);
@@ -450,6 +458,12 @@ TEST(Tileable, SamplesTileAndKeepTheirMiddle)
         TileableReport report;
         const OIIO::ImageBuf tile = make_tileable(sample, opt, &report);
         ASSERT_FALSE(tile.has_error()) << tile.geterror();
+        const std::string key = std::string("tileable.") + c.name;
+        test::doc_number(key + ".seam_before", test::seam_ratio(sample), 2);
+        test::doc_number(key + ".seam_after", test::seam_ratio(tile), 2);
+        test::doc_number(key + ".rank_before", seam_rank(sample), 3);
+        test::doc_number(key + ".rank_after", seam_rank(tile), 3);
+        test::doc_number(key + ".changed", 100.0 * report.changed_fraction, 0);
         std::cout << c.name << ": seam ratio " << test::seam_ratio(sample) << " -> "
                   << test::seam_ratio(tile) << ", seam rank " << seam_rank(sample) << " -> "
                   << seam_rank(tile) << ", band " << report.band << ", changed "
@@ -642,13 +656,17 @@ TEST(Fill, TheOutlineDoesNotShowOnSoftOrSharpPlates)
         OIIO::ImageBuf plate;
         OIIO::ImageBuf mask;
         const char* what;
+        const char* key;
     };
     const Case cases[] = {
-        { soft_plate("flowers.png"), box_mask(512, 512, OIIO::ROI(208, 304, 208, 304)), "soft" },
+        { soft_plate("flowers.png"), box_mask(512, 512, OIIO::ROI(208, 304, 208, 304)), "soft",
+            "soft_flowers" },
         { soft_plate("pebbles.png"), box_mask(512, 512, OIIO::ROI(110, 390, 140, 360)),
-            "soft, object-sized" },
-        { linear_sample("bricks.png"), box_mask(256, 256, OIIO::ROI(100, 160, 100, 160)), "sharp" },
-        { linear_sample("rust.png"), box_mask(256, 256, OIIO::ROI(90, 170, 80, 150)), "sharp" },
+            "soft, object-sized", "soft_pebbles_large" },
+        { linear_sample("bricks.png"), box_mask(256, 256, OIIO::ROI(100, 160, 100, 160)), "sharp",
+            "sharp_bricks" },
+        { linear_sample("rust.png"), box_mask(256, 256, OIIO::ROI(90, 170, 80, 150)), "sharp",
+            "sharp_rust" },
     };
     for (const Case& c : cases) {
         FillOptions opt = seeded(1);
@@ -658,6 +676,8 @@ TEST(Fill, TheOutlineDoesNotShowOnSoftOrSharpPlates)
         opt.outline = FillOutline::Copy;
         const double copied
             = outline_step_ratio(texture_fill(c.plate, c.mask, opt), c.plate, c.mask);
+        test::doc_number(std::string("fill.outline.") + c.key + ".match", matched, 2);
+        test::doc_number(std::string("fill.outline.") + c.key + ".copy", copied, 2);
         std::cout << c.what << ": outline step " << matched
                   << " x the plate's (outline=copy: " << copied << ")\n";
         EXPECT_LE(matched, 1.5) << c.what;
@@ -678,6 +698,8 @@ TEST(Fill, LargeAndFeatheredHolesHoldNoLattice)
                 = texture_fill(plate, box_mask(512, 512, hole, feather), seeded(1));
             ASSERT_FALSE(filled.has_error()) << filled.geterror();
             const double peak = lattice_peak(filled, hole);
+            test::doc_number(
+                std::string("fill.lattice.") + name + (feather ? ".feathered" : ".hard"), peak, 2);
             std::cout << name << (feather ? " feathered" : "") << ": lattice peak " << peak
                       << " (the plate's own " << own << ")\n";
             EXPECT_LT(peak, 2.0) << name << " feather " << feather;
@@ -784,6 +806,10 @@ TEST(Tileable, SmallSamplesGetABandLikeTheirMiddle)
         for (int x0 = b / 2 + 4; x0 + b <= 128 - b / 2 - 4; x0 += 8)
             middle
                 = std::max(middle, band_distance(band_energies(l, x0, b / 2, b, strip_h), target));
+        test::doc_number(std::string("tileable.small.") + name + ".band", in_band, 2);
+        test::doc_number(std::string("tileable.small.") + name + ".middle", middle, 2);
+        test::doc_number(
+            std::string("tileable.small.") + name + ".seam", test::seam_ratio(tile), 2);
         std::cout << name << ": band " << b << " px, band energies off by " << in_band
                   << " (the middle's strips up to " << middle << "), seam ratio "
                   << test::seam_ratio(tile) << "\n";

@@ -24,8 +24,8 @@ namespace texsyn {
 
 /// How a fill's copies meet the kept pixels at the mask's outline.
 enum class FillOutline {
-    /// Offset by a smooth membrane so that they meet them without a step (seamless cloning,
-    /// like a healing brush): on a soft plate the outline does not show.
+    /// Offset smoothly so that they meet them, and one another, without a step (gradient-
+    /// domain compositing, like a healing brush): on a soft plate the outline does not show.
     Match,
     /// Exact copies of known pixels, as the source map records them.
     Copy,
@@ -57,6 +57,11 @@ struct FillOptions {
     int coherence = 2;
     PatchVote vote = PatchVote::Robust;
     FillOutline outline = FillOutline::Match;
+    /// 1: the search compares patches with the image's low-order lighting divided out
+    /// (flatten_illumination), so that the fill takes texture from the whole plate, not only
+    /// from where it is lit alike; the copies are still the image's own pixels (outline=
+    /// match then relights them where they land).
+    int flatten = 0;
     uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
     int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
     /// Called with the fraction done (0..1) from the calling thread; may be empty.
@@ -94,8 +99,9 @@ struct FillReport {
 /// edge, and (but at the finest level) the filled pixels' histogram matched to the source
 /// pixels', so that a wide hole does not wash out. At the end every hole pixel copies,
 /// from the image (or sample) as given, all its channels at the pixel its patches voted
-/// for; with outline=match (the default) the copies are then offset by a smooth membrane
-/// that takes them to the kept pixels across the outline (compose_region); a mask value m
+/// for; with outline=match (the default) the copies are then offset smoothly so that they
+/// meet the kept pixels across the outline and one another across their seams without a
+/// step (gradient-domain compositing, compose_region); a mask value m
 /// between 0 and 1 blends: (1 - m) x the image + m x the fill. Pixels where the mask is 0
 /// are the image's, bit-identical; an empty mask returns the image unchanged.
 ///
@@ -103,7 +109,7 @@ struct FillReport {
 /// source map (source_map.h) with a fourth channel "m": every pixel's source (its own
 /// position where the mask is 0) and the mask's value, so that apply_source_map fills
 /// another map aligned with the image (a material's height, normal…) with the same copies,
-/// blended by the mask; without the outline's membrane, which each map's own pixels set.
+/// blended by the mask; without outline=match's offsets, which each map's own pixels set.
 ///
 /// Fails (false, message in dst) on invalid options; an image, mask, exclude or sample that
 /// has an error, NaN or Inf; a mask or exclude that is not one channel of the image's size;

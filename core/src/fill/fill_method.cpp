@@ -74,7 +74,9 @@ bool run_fill(const MethodOptions& options, const std::vector<MethodInput>& inpu
     };
     FillReport report;
     OIIO::ImageBuf map;
-    const bool want_map = !given.map.empty() || settings.source_map;
+    // A fill from sample= copies from two images and has no source map; a front end that
+    // takes one whenever there is (settings.source_map) gets none rather than an error.
+    const bool want_map = !given.map.empty() || (settings.source_map && !file("sample"));
     if (!texture_fill(result.image, *inputs[0].image, *file("mask"), opt, file("sample"),
             file("exclude"), &report, want_map ? &map : nullptr)) {
         error = result.image.geterror();

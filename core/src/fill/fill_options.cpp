@@ -41,6 +41,8 @@ const OptionTable<FillOptions>& FillOptions::table()
             "offset smoothly so that they meet without a step, like a healing brush: no "
             "contour on a soft plate) or copy (exact copies of known pixels, as the source "
             "map records them)");
+        detail::add_flatten(
+            t, "from what the search compares (the copies are still the image's own pixels)");
     });
 }
 

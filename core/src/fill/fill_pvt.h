@@ -119,10 +119,11 @@ struct RegionCopies {
 };
 
 /// Writes (through `write(x, y, values)`) every pixel of the region's crop where `mask`
-/// (the image's size) is above 0: the copied content, with FillOutline::Match offset by a
-/// smooth membrane that takes the difference between the kept pixels and the copies'
-/// continuations across the hole's outline to zero at the outline (seamless cloning:
-/// Pérez et al. 2003, as Farbman et al. 2009's membrane) and, if `rim` > 1 (a soft image),
+/// (the image's size) is above 0: the copied content, with FillOutline::Match offset by
+/// smooth offsets that take away the steps between the kept pixels and the copies across the
+/// hole's outline and between neighbouring copies across their seams, keeping each copy's own
+/// gradients (gradient-domain compositing: Pérez et al. 2003, Agarwala et al. 2004) and, if
+/// `rim` > 1 (a soft image),
 /// faded in over `rim` pixels from the kept pixels' smooth (push-pull) continuation;
 /// blended with the kept value by the mask: (1 - m) x kept + m x fill.
 void compose_region(const RegionCopies& copies, const Plane& mask, FillOutline outline, int rim,

@@ -8,6 +8,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <texsyn/feature_scale.h>
+#include <texsyn/homogeneity.h>
 #include <texsyn/pyramid.h>
 
 #include "fill_pvt.h"
@@ -77,6 +78,8 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     PlanarImage in;
     if (!planes_from_imagebuf(image, in, error))
         return fail("image: " + error);
+    if (given.flatten)
+        flatten_illumination(in, given.nthreads);
     FillOptions opt = given;
     if (opt.patch.empty())
         opt.patch = detail::automatic_patch_sizes(std::min(in.width(), in.height()));
