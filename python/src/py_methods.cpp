@@ -436,7 +436,7 @@ void read_inputs(Call& call, py::tuple args)
             if (!synthesizes_materials(m) || given.size() != 1)
                 raise_error(ErrorKind::Value,
                     call.function + ": a material set is synthesized by the copying methods "
-                        + "(neighborhood, choosy, patch), one set at a time");
+                        + "(neighborhood, choosy, patch) and fill, one set at a time");
             in.material = py::isinstance<PyMaterial>(g)
                 ? std::make_shared<PyMaterial>(g.cast<PyMaterial>())
                 : nullptr; // a dict: made once the keywords are read
@@ -626,13 +626,19 @@ py::object run_call(Call& call)
     }
     py::object image = material ? py::object(material->maps_of(*result.material))
                                 : colour_to_python(std::move(result.image), out);
-    // The images of the output-file options (a source map), after the result.
+    // The images of the output-file options (a source map), after the result; None for one
+    // a run has not (a fill from sample= copies from two images: it has no source map).
     py::list files;
     for (const OptionField& f : call.options.table().fields())
-        if (f.type == OptionType::OutputFile)
-            for (auto& [name, file] : result.files)
-                if (name == f.name)
-                    files.append(to_python(std::move(file), { out.form.kind, OIIO::TypeFloat }));
+        if (f.type == OptionType::OutputFile) {
+            const auto file = std::find_if(result.files.begin(), result.files.end(),
+                [&](const auto& named) { return named.first == f.name; });
+            if (file != result.files.end())
+                files.append(
+                    to_python(std::move(file->second), { out.form.kind, OIIO::TypeFloat }));
+            else if (settings.source_map && f.name == "map")
+                files.append(py::none());
+        }
     if (call.subbands) { // float32 arrays of the decorrelated components, by part name
         py::dict bands;
         for (const NamedImage& band : result.subbands)

@@ -128,7 +128,8 @@ TEST_F(Plugin, ChoosyRecipesGiveTheToolsPixels)
     const std::string written = expect_recipes_give_the_tools_pixels(
         "s.png", "choosy", "size=48x40:levels=3:iterations=1,2:search=kdtree:isotropic=0");
     EXPECT_EQ(written.find("size=48x40:levels=3:iterations=1,2:"), 0u) << written;
-    EXPECT_NE(written.find(":isotropic=0:flatten=0:scale=1:search=kdtree:"), std::string::npos) << written;
+    EXPECT_NE(written.find(":isotropic=0:flatten=0:scale=1:search=kdtree:"), std::string::npos)
+        << written;
     // And as JSON, iterations an array.
     write("a.texsyn",
         R"({"sample": "s.png", "size": [48, 40], "levels": 3, "iterations": [1, 2],)"

@@ -260,7 +260,7 @@ def test_apply_map(stucco, bad_files):
         refuses(lambda: texsyn.apply_map(coords, stucco, sample_size=size), ValueError,
                 "sample_size= : expected (width, height)")
     refuses(lambda: texsyn.apply_map(np.zeros((8, 8, 4), np.float32), stucco), ValueError,
-            "the source map has 4 channels; expected the channels x, y (and t)")
+            "the source map has 4 channels; expected the channels x, y (and t, m)")
     refuses(lambda: texsyn.apply_map(str(bad_files / "missing.exr"), stucco), OSError,
             "no such file")
 

@@ -118,11 +118,26 @@ def test_apply_map_scales_to_another_size_and_copies_values_exactly(stucco):
 def test_fill_keeps_every_pixel_outside_the_mask(bricks):
     mask = np.zeros(bricks.shape[:2], np.float32)
     mask[36:60, 36:60] = 1
-    out = texsyn.fill(bricks, mask=mask, patch=(7, 5), seed=1)
+    out, coords = texsyn.fill(bricks, mask=mask, patch=(7, 5), seed=1)
     assert out.shape == bricks.shape and out.dtype == np.float32
     keep = mask == 0
     assert np.array_equal(out[keep], bricks[keep])
     assert not np.array_equal(out[~keep], bricks[~keep])
+    # The source map: x, y and the mask as m; each kept pixel its own position, and applied
+    # to the image it gives the fill (outline=copy: exact copies, no offsets).
+    assert coords.shape == bricks.shape[:2] + (3,)
+    ys, xs = np.nonzero(keep)
+    assert np.array_equal(coords[ys, xs, 0], xs) and np.array_equal(coords[ys, xs, 1], ys)
+    assert np.array_equal(coords[:, :, 2], mask)
+    copied, _ = texsyn.fill(bricks, mask=mask, patch=(7, 5), seed=1, outline="copy")
+    assert np.array_equal(texsyn.apply_map(coords, bricks), copied)
+
+
+def test_fill_from_a_sample_has_no_source_map(bricks):
+    mask = np.zeros(bricks.shape[:2], np.float32)
+    mask[36:60, 36:60] = 1
+    out, coords = texsyn.fill(bricks, mask=mask, sample=bricks, patch=(7, 5), seed=1)
+    assert out.shape == bricks.shape and coords is None
 
 
 def test_tileable_keeps_everything_outside_its_band(bricks):
