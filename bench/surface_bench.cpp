@@ -36,6 +36,7 @@ struct Workload {
     ChoosySearch search;
     int repetitions;
     bool remesh = true; ///< remesh=auto (the default); false: remesh=0
+    BoundarySlots boundary = BoundarySlots::Own;
 };
 
 void run_workload(benchmark::State& state, const Workload& w)
@@ -48,6 +49,7 @@ void run_workload(benchmark::State& state, const Workload& w)
     opt.options.search = w.search;
     if (!w.remesh)
         opt.remesh = 0;
+    opt.boundary = w.boundary;
     const std::vector<MethodInput> inputs = { { &sample, nullptr, "rust.png" } };
     RunSettings settings;
     settings.nthreads = 2;
@@ -81,6 +83,13 @@ void register_workloads()
     for (int levels : { 2, 3 })
         workloads.push_back({ "M_exhaustive_L" + std::to_string(levels), "sphere.obj", levels, 32,
             S::Exhaustive, 2 });
+    // What boundary=wildcards costs: the mushroom (one boundary loop) with each rule, at 3
+    // levels from 96x96 and at 4 levels from 128x128 (docs/surfaces.md).
+    for (const auto& [levels, n] : { std::pair { 3, 96 }, std::pair { 4, 128 } })
+        for (BoundarySlots b : { BoundarySlots::Own, BoundarySlots::Wildcards })
+            workloads.push_back({ std::string(b == BoundarySlots::Own ? "W_own" : "W_wildcards")
+                    + "_L" + std::to_string(levels) + "_N" + std::to_string(n),
+                "mushroom.obj", levels, n, S::KdTree, 3, true, b });
     // Eq. 8 in N: the sphere at levels=2 (6,480 faces) from n x n, both searches.
     for (int n : { 16, 32, 48, 64 })
         for (S s : { S::KdTree, S::Exhaustive })

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@
 #include "surface/surface_mesh_pvt.h"
 #include "surface/surface_synthesis_pvt.h"
 
+#include "test_metrics.h"
 #include "test_samples.h"
 
 using namespace texsyn;
@@ -263,39 +265,88 @@ TEST(SurfaceBoundary, SameSeedSameColoursAtAnyThreadCount)
     EXPECT_EQ(grow(mushroom(), sample, 2, 3, 1).colours, grow(mushroom(), sample, 2, 3, 2).colours);
 }
 
-// The finest faces within two rings of the boundary against the rest, per channel: their
-// means and standard deviations apart, in units of the interior's standard deviation,
-// averaged over seeds 1 to 3 (pebbles 32x32, 2 levels, 18000 finest faces), with the
-// face's own value in slots past the boundary (the default) and with wildcards. Measured
-// (R, G, B): own, mean +0.26, +0.26, +0.25, sd +0.04, +0.03, +0.04; wildcards, mean +0.18,
-// +0.19, +0.20, sd +0.12, +0.14, +0.16. In this small setup neither is better on both
-// counts; at 3 levels from a 96x96 sample (docs/surfaces.md) own is, which is why it is the
-// default. The bounds are tripwires a little above what is measured.
+namespace {
+
+// The band along the boundary: the finest faces within two rings of it against the rest,
+// per channel (R, G, B), their means and standard deviations apart in units of the
+// interior's standard deviation, averaged over seeds 1..seeds.
+struct BandGaps {
+    std::vector<double> mean = std::vector<double>(3, 0.0), sd = std::vector<double>(3, 0.0);
+};
+
+BandGaps band_gaps(const std::vector<Plane>& sample, int levels, int seeds, BoundarySlots boundary)
+{
+    BandGaps gaps;
+    for (int seed = 1; seed <= seeds; ++seed) {
+        const SurfaceSynthesis out
+            = grow(mushroom(), sample, levels, uint64_t(seed), 2, ChoosySearch::KdTree, boundary);
+        const std::vector<uint8_t> near = near_boundary(out.pyramid.levels.back());
+        EXPECT_GT(std::count(near.begin(), near.end(), uint8_t(1)), 0);
+        EXPECT_EQ(out.colours.size(), 3u);
+        for (size_t c = 0; c < 3 && c < out.colours.size(); ++c) {
+            const Moments b = moments(out.colours[c], near, 1);
+            const Moments i = moments(out.colours[c], near, 0);
+            gaps.mean[c] += (b.mean - i.mean) / i.sd / seeds;
+            gaps.sd[c] += (b.sd - i.sd) / i.sd / seeds;
+        }
+    }
+    return gaps;
+}
+
+// Prints the gaps and, for docs/surfaces.md, their range over the channels as
+// "[doc] surface.band.<setup>.<own|wildcards>.<mean|sd>.<lo|hi>" (sd in percent).
+void report(const BandGaps& gaps, const std::string& setup, BoundarySlots boundary)
+{
+    const std::string name = boundary == BoundarySlots::Own ? "own" : "wildcards";
+    for (size_t c = 0; c < 3; ++c)
+        std::printf("%s %s, channel %zu: mean gap %+.3f, sd gap %+.3f interior sd\n", setup.c_str(),
+            name.c_str(), c, gaps.mean[c], gaps.sd[c]);
+    const std::string key = "surface.band." + setup + "." + name;
+    const auto [mean_lo, mean_hi] = std::minmax_element(gaps.mean.begin(), gaps.mean.end());
+    const auto [sd_lo, sd_hi] = std::minmax_element(gaps.sd.begin(), gaps.sd.end());
+    doc_number(key + ".mean.lo", *mean_lo, 2);
+    doc_number(key + ".mean.hi", *mean_hi, 2);
+    doc_number(key + ".sd.lo", 100.0 * *sd_lo, 0);
+    doc_number(key + ".sd.hi", 100.0 * *sd_hi, 0);
+}
+
+double largest(const std::vector<double>& v)
+{
+    double m = 0.0;
+    for (double x : v)
+        m = std::max(m, std::abs(x));
+    return m;
+}
+
+} // namespace
+
+// A small setup (pebbles 32x32, 2 levels, 18000 finest faces, seeds 1-3): neither boundary
+// rule is better on both counts here (docs/surfaces.md quotes the figures). The bounds are
+// tripwires a little above what is measured.
 TEST(SurfaceBoundary, BandAlongTheBoundary)
 {
     const std::vector<Plane> sample = pebbles(32);
-    const int seeds = 3;
     for (BoundarySlots boundary : { BoundarySlots::Own, BoundarySlots::Wildcards }) {
-        std::vector<double> mean_gap(3, 0.0), sd_gap(3, 0.0);
-        for (int seed = 1; seed <= seeds; ++seed) {
-            const SurfaceSynthesis out
-                = grow(mushroom(), sample, 2, uint64_t(seed), 2, ChoosySearch::KdTree, boundary);
-            const std::vector<uint8_t> near = near_boundary(out.pyramid.levels.back());
-            ASSERT_GT(std::count(near.begin(), near.end(), uint8_t(1)), 0);
-            ASSERT_EQ(out.colours.size(), 3u);
-            for (size_t c = 0; c < 3; ++c) {
-                const Moments b = moments(out.colours[c], near, 1);
-                const Moments i = moments(out.colours[c], near, 0);
-                mean_gap[c] += (b.mean - i.mean) / i.sd / seeds;
-                sd_gap[c] += (b.sd - i.sd) / i.sd / seeds;
-            }
-        }
+        const BandGaps gaps = band_gaps(sample, 2, 3, boundary);
+        report(gaps, "small", boundary);
         const bool own = boundary == BoundarySlots::Own;
-        for (size_t c = 0; c < 3; ++c) {
-            std::printf("%s, channel %zu: mean gap %+.3f, sd gap %+.3f interior sd\n",
-                own ? "own" : "wildcards", c, mean_gap[c], sd_gap[c]);
-            EXPECT_LT(std::abs(mean_gap[c]), own ? 0.3 : 0.25) << c;
-            EXPECT_LT(std::abs(sd_gap[c]), own ? 0.1 : 0.2) << c;
-        }
+        EXPECT_LT(largest(gaps.mean), own ? 0.3 : 0.25);
+        EXPECT_LT(largest(gaps.sd), own ? 0.1 : 0.2);
+    }
+}
+
+// At picture size (pebbles 96x96, 3 levels, seeds 1-6) the face's own value (the default)
+// leaves a smaller band than wildcards in both the mean and the spread, on every channel:
+// why `own` is the default.
+TEST(SurfaceBoundary, OwnLeavesTheSmallerBandAtPictureSize)
+{
+    const std::vector<Plane> sample = pebbles(96);
+    const BandGaps own = band_gaps(sample, 3, 6, BoundarySlots::Own);
+    const BandGaps wild = band_gaps(sample, 3, 6, BoundarySlots::Wildcards);
+    report(own, "picture", BoundarySlots::Own);
+    report(wild, "picture", BoundarySlots::Wildcards);
+    for (size_t c = 0; c < 3; ++c) {
+        EXPECT_LT(std::abs(own.mean[c]), std::abs(wild.mean[c])) << c;
+        EXPECT_LT(std::abs(own.sd[c]), std::abs(wild.sd[c])) << c;
     }
 }
