@@ -319,6 +319,10 @@ TEST(ChoosyQuality, MatchesFirstOrderStatisticsFarBetterThanGreedy)
         opt.penalty = 0.0f;
         const std::vector<double> greedy = channel_w1(choosy_synthesize(sample, opt), sample);
         for (size_t c = 0; c < 3; ++c) {
+            test::doc_number(
+                std::string("choosy.") + name + ".w1." + "RGB"[c] + ".choosy", choosy[c], 4);
+            test::doc_number(
+                std::string("choosy.") + name + ".w1." + "RGB"[c] + ".greedy", greedy[c], 3);
             std::cout << name << " channel " << c << ": W1 choosy " << choosy[c] << ", greedy "
                       << greedy[c] << "\n";
             EXPECT_LE(choosy[c], 0.5 * greedy[c]) << name << " channel " << c;

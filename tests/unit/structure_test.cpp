@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "structure_metric.h"
+#include "test_metrics.h"
 #include "test_samples.h"
 
 using namespace texsyn;
@@ -74,6 +75,12 @@ void expect_structure(const char* method,
         const Measure pasted = measure(control ? control(sample, half_shifted_tiling(sample, w, h))
                                                : half_shifted_tiling(sample, w, h),
             sample);
+        const std::string key = std::string("structure.") + method + "." + name;
+        for (const auto& [what, m] :
+            { std::pair { "result", ours }, { "shuffled", shuffle }, { "shifted", pasted } }) {
+            doc_number(key + "." + what + ".arrangement", m.arrangement, 3);
+            doc_number(key + "." + what + ".seams", m.seams, 2);
+        }
         std::printf("%-12s %-18s result %.3f %.3f | shuffled %.3f %.3f | half-shifted %.3f %.3f\n",
             method, name, ours.arrangement, ours.seams, shuffle.arrangement, shuffle.seams,
             pasted.arrangement, pasted.seams);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -78,6 +79,14 @@ inline double area_weighted_w1(
         w1 += double(areas[i]) / total * std::abs(double(faces[i]) - double(sample));
     }
     return w1;
+}
+
+/// Prints "[doc] key value" (value with `digits` decimals): a number a page of docs/ quotes,
+/// which docs/numbers.py collects from the test's output and writes into the page's
+/// <!--n:key-->…<!--/n--> span, so that no quoted measurement is typed by hand.
+inline void doc_number(const std::string& key, double value, int digits)
+{
+    std::printf("[doc] %s %.*f\n", key.c_str(), digits, value);
 }
 
 } // namespace texsyn::test
