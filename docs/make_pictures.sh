@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Regenerates the pictures in docs/images with the tool itself.
-# usage: docs/make_pictures.sh BUILD/oiiotool-ext/texsyn [surfaces|fill|materials]
+# usage: docs/make_pictures.sh BUILD/oiiotool-ext/texsyn [surfaces|fill|materials|patch]
 # (with `surfaces`, only docs/surfaces.md's pictures; they need povray: apt-get install -y povray;
-# with `fill` or `materials`, only docs/fill.md's or docs/materials.md's)
+# with `fill`, `materials` or `patch`, only docs/fill.md's, docs/materials.md's, or
+# docs/patch.md's and docs/which-method.md's)
 set -euo pipefail
 texsyn=$(realpath "$1")
 cd "$(dirname "$0")"
@@ -11,19 +12,31 @@ samples=../data/samples
 out=images
 mkdir -p "$out"
 unset OCIO
-# docs/patch.md: the sample, then --patch, --neighborhood and --pyramid at 320x320 (seed 1),
-# on the structured samples; docs/which-method.md: one sample and result per case.
+# One row: SAMPLE, then --patch, --neighborhood and --pyramid at 320x320 (seed 1), as OUT.
+three_methods() { # SAMPLE OUT
+  "$texsyn" --seed 1 "$1" --patch:size=320x320 -o "$out/pp_patch.png"
+  "$texsyn" --seed 1 "$1" --neighborhood:size=320x320 -o "$out/pp_nb.png"
+  "$texsyn" --seed 1 "$1" --pyramid:size=320x320 -o "$out/pp_pyr.png"
+  oiiotool "$1" "$out/pp_patch.png" "$out/pp_nb.png" "$out/pp_pyr.png" --mosaic:pad=4 4x1 -o "$2"
+}
+# docs/patch.md: the three methods on the structured samples; docs/which-method.md: one
+# sample and result per case.
 patch_pictures() {
   for s in bricks tiles_green weave_green wood_grain flowers; do
-    "$texsyn" --seed 1 "$samples/$s.png" --patch:size=320x320 -o "$out/pp_patch.png"
-    "$texsyn" --seed 1 "$samples/$s.png" --neighborhood:size=320x320 -o "$out/pp_nb.png"
-    "$texsyn" --seed 1 "$samples/$s.png" --pyramid:size=320x320 -o "$out/pp_pyr.png"
-    oiiotool "$samples/$s.png" "$out/pp_patch.png" "$out/pp_nb.png" "$out/pp_pyr.png" \
-        --mosaic:pad=4 4x1 -o "$out/patch_$s.png"
+    three_methods "$samples/$s.png" "$out/patch_$s.png"
   done
+  # Small samples (128x128: a crop of the tiles, the marble as bundled): the defaults tune
+  # themselves to them as to the large ones.
+  for s in tiles_green marble_pink; do
+    oiiotool "$samples/$s.png" --cut 128x128+0+0 -o "$out/pp_small.png"
+    three_methods "$out/pp_small.png" "$out/patch_small_$s.png"
+  done
+  "$texsyn" --seed 1 "$samples/leaves_autumn.png" --patch:size=384x384 -o "$out/pp_f.png"
+  oiiotool "$samples/leaves_autumn.png" "$out/pp_f.png" --mosaic:pad=4 2x1 -o "$out/which_small.png"
   "$texsyn" --seed 1 "$samples/bricks.png" --patch:size=320x320:repetition=0 -o "$out/pp_r0.png"
+  "$texsyn" --seed 1 "$samples/bricks.png" --patch:size=320x320 -o "$out/pp_r05.png"
   "$texsyn" --seed 1 "$samples/bricks.png" --patch:size=320x320:repetition=2 -o "$out/pp_r2.png"
-  oiiotool "$out/pp_r0.png" "$out/pp_patch.png" "$out/pp_r2.png" --mosaic:pad=4 3x1 \
+  oiiotool "$out/pp_r0.png" "$out/pp_r05.png" "$out/pp_r2.png" --mosaic:pad=4 3x1 \
       -o "$out/patch_repetition.png"
   "$texsyn" --seed 1 "$samples/rust.png" --pyramid:size=256x256 -o "$out/pp_a.png"
   "$texsyn" --seed 1 "$samples/grass.png" --neighborhood:size=256x256 -o "$out/pp_b.png"
@@ -105,9 +118,21 @@ fill_pictures() {
   one tiles_green "$tmp/tiles_hole.png" tiles
   blob 128x128 50,15,75,100 40,45,90,65 "$tmp/wood_hole.png"
   one wood_grain "$tmp/wood_hole.png" wood
-  # --tileable: the sample tiled 2x2 (its seams show), then the result tiled 2x2 (seed 1).
-  for s in rust tiles_green bricks; do
-    "$texsyn" --seed 1 "$samples/$s.png" --tileable -o "$tmp/tile.png"
+  # A soft plate: a 64x64 crop of flowers enlarged 8 times, a 96x96 hole; the hole, the fill
+  # with outline=copy (exact copies: the outline shows), with outline=match (the default).
+  oiiotool "$samples/flowers.png" --cut 64x64+0+0 --resize 512x512 -o "$tmp/soft.png"
+  oiiotool --create 512x512 1 --box:color=1:fill=1 208,208,303,303 -d uint8 -o "$tmp/soft_hole.png"
+  "$texsyn" --seed 1 "$tmp/soft.png" --fill:mask="$tmp/soft_hole.png":outline=copy -o "$tmp/copy.png"
+  "$texsyn" --seed 1 "$tmp/soft.png" --fill:mask="$tmp/soft_hole.png" -o "$tmp/match.png"
+  oiiotool "$tmp/soft_hole.png" --mulc -1 --addc 1 --ch 0,0,0 "$tmp/soft.png" --mul -o "$tmp/holed.png"
+  oiiotool "$tmp/holed.png" --cut 256x256+128+128 "$tmp/copy.png" --cut 256x256+128+128 \
+      "$tmp/match.png" --cut 256x256+128+128 --mosaic:pad=4 3x1 -d uint8 -o "$out/fill_soft.png"
+  # --tileable: the sample tiled 2x2 (its seams show), then the result tiled 2x2 (seed 1); the
+  # lit ones with flatten=1, as texsyn advises for them.
+  for s in rust tiles_green bricks leaves_autumn; do
+    flat=""
+    case "$s" in rust | tiles_green | bricks) flat=":flatten=1" ;; esac
+    "$texsyn" --seed 1 "$samples/$s.png" --tileable$flat -o "$tmp/tile.png"
     oiiotool "$samples/$s.png" --dup --mosaic 2x1 --dup --mosaic 1x2 "$tmp/tile.png" --dup \
         --mosaic 2x1 --dup --mosaic 1x2 --mosaic:pad=8 2x1 -d uint8 -o "$out/tileable_$s.png"
   done
@@ -141,6 +166,11 @@ fi
 if [ "${2:-}" = fill ]; then
   fill_pictures
   ls -la "$out"/fill_* "$out"/tileable_*
+  exit 0
+fi
+if [ "${2:-}" = patch ]; then
+  patch_pictures
+  ls -la "$out"/patch_* "$out"/which_*
   exit 0
 fi
 if [ "${2:-}" = surfaces ]; then

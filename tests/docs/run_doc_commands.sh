@@ -27,6 +27,14 @@ cp "$repo/data/samples/weave_green.png" weave.png
 cp "$repo/ocio-configs/config.ocio" studio.ocio
 cp "$repo/data/meshes/cow.obj" "$repo/data/meshes/torus_uv.obj" "$repo/data/meshes/sphere.obj" .
 oiiotool "$repo/data/samples/stucco_yellow.png" -d uint16 -o scan.tif
+cp "$repo/data/samples/leaves_autumn.png" leaves.png
+cp wood_grain.png wood.png && cp wood_grain.png trim.png
+# A plate with its height map, a material set and masks of its size (the bricks' hole), and a
+# soft plate: a 64x64 crop of the flowers enlarged 4 times.
+oiiotool bricks.png -d half -o plate.exr && oiiotool bricks_height.png -d half -o plate_height.exr
+cp bricks.png albedo.png && cp bricks_normal.png normal.png && cp bricks_height.png rough.png
+for m in logo logo_mask hole; do cp bricks_hole.png "$m.png"; done
+oiiotool flowers.png --cut 64x64+0+0 --resize 256x256 -d half -o soft_plate.exr
 mkdir -p build && ln -s "$plugins" build/plugins  # the README's build-tree plugin path
 
 # Extract the commands: inside ```sh fences, lines starting with a tool name, joined with
