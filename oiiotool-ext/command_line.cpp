@@ -234,6 +234,9 @@ void check_output_path(
     std::error_code ec;
     if (std::filesystem::is_directory(out, ec))
         throw CliError(option + " " + out + " : is a directory");
+    std::string error;
+    if (!check_output_destination(out, error)) // "OUT: exists and is not a regular file…"
+        throw CliError(option + " " + out + " : " + error.substr(out.size() + 2));
     if (!std::filesystem::is_directory(dir, ec))
         throw CliError(option + " " + out + " : directory " + dir.string() + " does not exist");
     if (::access(dir.c_str(), W_OK) != 0)

@@ -285,6 +285,22 @@ def test_recipes_and_analyses(stucco, bad_files):
     assert sorted(os.listdir(bad_files)) == before  # nothing left behind
 
 
+def test_analysis_save_refuses_a_device(stucco, tmp_path):
+    """Given /dev/full, Analysis.save used to replace the machine's /dev/full with a regular
+    file; a device or FIFO is refused and left as it is."""
+    import stat
+    analysis = texsyn.analyze(stucco)
+    refuses(lambda: analysis.save("/dev/full"), OSError,
+            "exists and is not a regular file (a device, FIFO or socket)")
+    assert stat.S_ISCHR(os.stat("/dev/full").st_mode)
+    assert not [n for n in os.listdir("/dev") if ".texsyn-tmp" in n]  # refused before writing
+    os.mkfifo(tmp_path / "a.tsa")
+    refuses(lambda: analysis.save(str(tmp_path / "a.tsa")), OSError,
+            "exists and is not a regular file (a device, FIFO or socket)")
+    assert stat.S_ISFIFO(os.stat(tmp_path / "a.tsa").st_mode)
+    assert os.listdir(tmp_path) == ["a.tsa"]  # no temporary left behind
+
+
 def test_colour_spaces_of_the_wrong_type(stucco):
     refuses(lambda: texsyn.pyramid(stucco, iscolorspace=5), ValueError,
             "iscolorspace= : expected a colour space name, or a list of one per input")

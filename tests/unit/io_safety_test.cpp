@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <OpenImageIO/imagebufalgo.h>
@@ -54,6 +55,80 @@ TEST_F(IoSafety, TemporaryNamesKeepTheExtensionOwnerAndNameMax)
     EXPECT_EQ(fs::path(tmp).parent_path(), dir);
     EXPECT_NE(temporary_path_for(name), tmp); // a counter makes each unique
     discard_temporary(tmp);
+}
+
+// A temporary is created by temporary_path_for itself, exclusively: a regular file of this
+// process's user, never a name someone planted (each name has an unpredictable part).
+TEST_F(IoSafety, TemporariesAreCreatedExclusivelyAndNotThroughLinks)
+{
+    const std::string name = (dir / "out.exr").string();
+    const std::string a = temporary_path_for(name), b = temporary_path_for(name);
+    EXPECT_NE(a, b);
+    for (const std::string& t : { a, b }) {
+        EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(t))) << t;
+        EXPECT_EQ(fs::file_size(t), 0u) << t;
+    }
+    discard_temporary(a);
+    discard_temporary(b);
+}
+
+// commit_file renames only the regular file it made: a temporary swapped for a link (to a
+// file outside the folder) is removed, the link's target untouched, nothing committed.
+// write_bytes never writes through a link.
+TEST_F(IoSafety, SwappedTemporariesAndLinksAreNotWrittenThrough)
+{
+    const fs::path victim = dir / "victim.txt";
+    std::ofstream(victim) << "victim";
+    const std::string out = (dir / "out.exr").string();
+    const std::string tmp = temporary_path_for(out);
+    fs::remove(tmp);
+    fs::create_symlink(victim, tmp);
+    std::string error;
+    EXPECT_FALSE(commit_file(tmp, out, error));
+    EXPECT_EQ(error,
+        out
+            + ": cannot write (its temporary file was replaced while it was written: is "
+              "someone else writing to this folder?)");
+    EXPECT_FALSE(fs::exists(fs::symlink_status(tmp)));
+    EXPECT_FALSE(fs::exists(out));
+
+    fs::create_symlink(victim, dir / "link.txt");
+    std::string reason;
+    EXPECT_FALSE(write_bytes((dir / "link.txt").string(), "attack", reason));
+    EXPECT_EQ(reason.rfind("cannot create (", 0), 0u) << reason;
+    std::ifstream in(victim);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "victim");
+}
+
+// An output replaces nothing, a regular file or a link; never a FIFO, socket, device or
+// directory, and commit_file keeps to that too.
+TEST_F(IoSafety, OnlyRegularFilesAndLinksAreReplaced)
+{
+    std::string error;
+    EXPECT_TRUE(check_output_destination((dir / "none.exr").string(), error));
+    std::ofstream(dir / "file.exr") << "x";
+    EXPECT_TRUE(check_output_destination((dir / "file.exr").string(), error));
+    fs::create_symlink("/dev/null", dir / "link.exr");
+    EXPECT_TRUE(check_output_destination((dir / "link.exr").string(), error));
+    ASSERT_EQ(::mkfifo((dir / "fifo.exr").c_str(), 0644), 0);
+    EXPECT_FALSE(check_output_destination((dir / "fifo.exr").string(), error));
+    EXPECT_EQ(error,
+        (dir / "fifo.exr").string()
+            + ": exists and is not a regular file (a device, FIFO or socket); texsyn does not "
+              "replace it");
+    EXPECT_FALSE(check_output_destination("/dev/null", error));
+    fs::create_directories(dir / "folder.exr");
+    EXPECT_FALSE(check_output_destination((dir / "folder.exr").string(), error));
+    EXPECT_NE(error.find("(a directory)"), std::string::npos) << error;
+
+    const std::string tmp = temporary_path_for((dir / "fifo.exr").string());
+    EXPECT_FALSE(commit_file(tmp, (dir / "fifo.exr").string(), error));
+    EXPECT_TRUE(fs::is_fifo(dir / "fifo.exr"));
+    EXPECT_FALSE(fs::exists(tmp));
+    const std::string ok = temporary_path_for((dir / "link.exr").string());
+    ASSERT_TRUE(commit_file(ok, (dir / "link.exr").string(), error)) << error;
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir / "link.exr")));
+    EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
 TEST_F(IoSafety, LiveTemporariesAreRemovedOnDemandAndCommittedOnesAreNot)

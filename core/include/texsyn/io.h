@@ -35,16 +35,26 @@ bool read_image_spec(
 /// would block or never end.
 bool check_regular_file(const std::string& filename, const std::string& what, std::string& error);
 
-/// A path in the same directory as `filename`, with the same extension (so OIIO picks the
-/// same format), that does not exist yet: write there, then commit_file() or
-/// discard_temporary(). Named ".STEM.texsyn-tmpPID-HOST-N.EXT" (within NAME_MAX) and
-/// registered until committed or discarded, so that remove_live_temporaries() finds it.
-/// The first call for a folder removes the temporaries that dead processes of this host
-/// left there (SIGKILL cannot be handled).
+/// A new, empty regular file in the same directory as `filename`, with the same extension
+/// (so OIIO picks the same format): write there, then commit_file() or discard_temporary().
+/// Created with O_CREAT | O_EXCL | O_NOFOLLOW under an unpredictable name
+/// ".STEM.texsyn-tmpPID-HOST-N-RANDOM.EXT" (within NAME_MAX), so that a link planted in a
+/// shared folder is never followed, and registered until committed or discarded, so that
+/// remove_live_temporaries() finds it. If the folder refuses new files the path is returned
+/// uncreated (the writer then fails with its reason). The first call for a folder removes
+/// the temporaries that dead processes of this host left there (SIGKILL cannot be handled).
 std::string temporary_path_for(const std::string& filename);
 
-/// Renames `temporary` over `filename` (atomic on one file system); removes `temporary`
-/// and fails if the rename fails.
+/// False (with "FILE: exists and is not a regular file (a device, FIFO or socket); texsyn
+/// does not replace it", or "(a directory)") if `filename` exists, not following a link,
+/// and is neither a regular file nor a symbolic link (which an output replaces, never its
+/// target). Checked before a run writes anything, and again by commit_file().
+bool check_output_destination(const std::string& filename, std::string& error);
+
+/// Renames `temporary` over `filename` (atomic on one file system) if `temporary` is still
+/// the regular file of this user that temporary_path_for() made (not a link, one name) and
+/// check_output_destination() passes; otherwise, or if the rename fails, removes
+/// `temporary` and fails ("FILE: reason").
 bool commit_file(const std::string& temporary, const std::string& filename, std::string& error);
 
 /// Removes a temporary file that will not be committed (if it exists).

@@ -213,6 +213,8 @@ bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename
         return false;
     }
     out.reset();
+    if (!check_output_destination(filename, error))
+        return false;
     const std::string tmp = temporary_path_for(filename);
     if (write_image_verified(image, tmp, format, error))
         return commit_file(tmp, filename, error);
@@ -224,6 +226,8 @@ bool write_image_atomic(const OIIO::ImageBuf& image, const std::string& filename
 bool write_multipart_exr(const std::string& filename, const std::vector<OIIO::ImageSpec>& specs,
     const std::function<void(size_t, OIIO::ImageBuf&)>& part, std::string& error)
 {
+    if (!check_output_destination(filename, error))
+        return false;
     const std::string tmp = temporary_path_for(filename);
     auto fail = [&](const std::string& msg) {
         discard_temporary(tmp);

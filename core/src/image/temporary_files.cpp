@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Temporary output files: named so that their owner (host and pid) is recognisable,
-// registered while they exist so that a signal handler or an exit() deep inside an image
-// library can remove them, and committed by rename.
+// Temporary output files: created exclusively (never through a planted link), named so
+// that their owner (host and pid) is recognisable, registered while they exist so that a
+// signal handler or an exit() deep inside an image library can remove them, and committed
+// by rename over a destination that is a regular file, a link (replaced itself) or nothing.
 #include <texsyn/io.h>
 
 #include <algorithm>
@@ -12,9 +13,12 @@
 #include <cstring>
 #include <filesystem>
 #include <mutex>
+#include <random>
 #include <set>
 #include <system_error>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace texsyn {
@@ -121,17 +125,34 @@ std::string temporary_path_for(const std::string& filename)
     static std::atomic<unsigned> counter { 0 };
     fs::path p(filename);
     remove_stale_temporaries(p.parent_path());
-    // Within NAME_MAX (255) even for a long name: the stem is shortened, never the marker,
-    // owner and extension that make the file recognisable.
-    const std::string tag = marker + std::to_string(::getpid()) + "-" + host_tag() + "-"
-        + std::to_string(counter++) + p.extension().string();
-    std::string stem = p.stem().string();
-    if (1 + stem.size() + tag.size() > 255)
-        stem.resize(255 - 1 - std::min<size_t>(tag.size(), 254));
-    const std::string path = (p.parent_path() / ("." + stem + tag)).string();
-    std::error_code ec;
-    register_live(fs::absolute(path, ec).string());
-    return path;
+    std::random_device entropy;
+    std::string path;
+    for (int attempt = 0; attempt < 64; ++attempt) {
+        // Within NAME_MAX (255) even for a long name: the stem is shortened, never the
+        // marker, owner and extension that make the file recognisable. The random part
+        // makes the name unpredictable to anyone who could plant a link there in advance.
+        char unique[32];
+        std::snprintf(unique, sizeof(unique), "%u-%08x", counter++, unsigned(entropy()));
+        const std::string tag = marker + std::to_string(::getpid()) + "-" + host_tag() + "-"
+            + unique + p.extension().string();
+        std::string stem = p.stem().string();
+        if (1 + stem.size() + tag.size() > 255)
+            stem.resize(255 - 1 - std::min<size_t>(tag.size(), 254));
+        path = (p.parent_path() / ("." + stem + tag)).string();
+        // Created here, exclusively and not through a link, so that the writer opens a
+        // regular file of ours; a name someone else made is skipped, never followed.
+        const int fd
+            = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            ::close(fd);
+            std::error_code ec;
+            register_live(fs::absolute(path, ec).string());
+            return path;
+        }
+        if (errno != EEXIST)
+            return path; // the folder refuses files: so will the writer, with its reason
+    }
+    return path + "/"; // 64 names taken: a path no writer can create
 }
 
 void discard_temporary(const std::string& temporary)
@@ -141,8 +162,34 @@ void discard_temporary(const std::string& temporary)
     unregister_live(fs::absolute(temporary, ec).string());
 }
 
+bool check_output_destination(const std::string& filename, std::string& error)
+{
+    struct stat st;
+    if (::lstat(filename.c_str(), &st) != 0 || S_ISREG(st.st_mode) || S_ISLNK(st.st_mode))
+        return true;
+    error = filename + ": exists and is not a regular file ("
+        + (S_ISDIR(st.st_mode) ? "a directory" : "a device, FIFO or socket")
+        + "); texsyn does not replace it";
+    return false;
+}
+
 bool commit_file(const std::string& temporary, const std::string& filename, std::string& error)
 {
+    // The temporary must still be the regular file this process made: in a folder others
+    // can write, a name swapped for a link or another user's file is not renamed into place.
+    struct stat st;
+    if (::lstat(temporary.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != ::geteuid()
+        || st.st_nlink != 1) {
+        discard_temporary(temporary);
+        error = filename
+            + ": cannot write (its temporary file was replaced while it was "
+              "written: is someone else writing to this folder?)";
+        return false;
+    }
+    if (!check_output_destination(filename, error)) {
+        discard_temporary(temporary);
+        return false;
+    }
     std::error_code ec;
     fs::rename(temporary, filename, ec);
     if (ec) {

@@ -36,9 +36,18 @@ std::string errno_text(const char* what)
 // write_bytes() for `size` bytes at `data`.
 bool write_file(const std::string& path, const void* data, size_t size, std::string& reason)
 {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    // Never through a link, and never into a FIFO or device (O_NONBLOCK: opening a FIFO
+    // with no reader would block).
+    const int fd = ::open(
+        path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0666);
     if (fd < 0) {
         reason = errno_text("cannot create");
+        return false;
+    }
+    struct stat st;
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        reason = "cannot create (not a regular file)";
+        ::close(fd);
         return false;
     }
     const auto* bytes = static_cast<const char*>(data);

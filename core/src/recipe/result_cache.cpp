@@ -15,6 +15,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <OpenImageIO/imagebufalgo.h>
@@ -175,7 +176,16 @@ class EntryLock {
 public:
     explicit EntryLock(const std::string& path)
     {
-        m_fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+        // Never through a planted link (O_NOFOLLOW), and only a regular file: a FIFO or
+        // device at the lock's name is not used.
+        m_fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0666);
+        struct stat st;
+        if (m_fd >= 0 && (::fstat(m_fd, &st) != 0 || !S_ISREG(st.st_mode))) {
+            ::close(m_fd);
+            m_fd = -1;
+            m_why = path + ": cannot lock (not a regular file)";
+            return;
+        }
         int rc = -1;
         while (m_fd >= 0 && (rc = ::flock(m_fd, LOCK_EX)) != 0 && errno == EINTR) { }
         if (rc != 0)

@@ -311,6 +311,8 @@ bool write_statistics(
         append_table(bytes, t);
     append_u64(bytes, fnv1a(bytes.data(), bytes.size()));
 
+    if (!check_output_destination(filename, error))
+        return false;
     const std::string temporary = temporary_path_for(filename);
     std::string reason;
     if (!write_bytes(temporary, bytes, reason)) {

@@ -227,6 +227,8 @@ bool write_face_colour_ply(const std::string& path, const std::vector<Imath::V3f
     layout.channels = face_channels.size();
     layout.display = display_rgb != nullptr;
 
+    if (!check_output_destination(path, error))
+        return false;
     const std::string tmp = temporary_path_for(path);
     bool written = false;
     try {

@@ -121,6 +121,8 @@ void read_back(const std::string& path)
 
 bool write_volume_vdb(const std::string& filename, const PlanarVolume& v, std::string& error)
 {
+    if (!check_output_destination(filename, error))
+        return false;
     const std::string tmp = temporary_path_for(filename);
     std::string reason;
     try {
