@@ -9,15 +9,18 @@
 // Without it, a bad recipe fails cleanly with the plugin's message. Samples are read with
 // their own ImageInput (texsyn::read_image): re-entering OIIO's shared ImageCache while it
 // opens this file made oiiotool abort.
+#include <algorithm>
 #include <deque>
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <new>
 
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
 
 #include <texsyn/error_text.h>
+#include <texsyn/memory.h>
 #include <texsyn/recipe.h>
 #include <texsyn/version.h>
 #include <texsyn/volume.h>
@@ -61,11 +64,85 @@ public:
     // as its further subimages are known only then.
     bool open(const std::string& name, ImageSpec& newspec) override
     {
+        // No allocation failure may end the host: it becomes this file's error.
+        try {
+            return open_recipe(name, newspec);
+        } catch (const std::bad_alloc&) {
+            close();
+            errorfmt("{}: out of memory opening the recipe", name);
+            return false;
+        }
+    }
+
+    bool close() override
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_images.reset();
+        m_announced.clear();
+        m_subimage = 0;
+        return true;
+    }
+
+    int current_subimage() const override { return m_subimage; }
+
+    bool seek_subimage(int subimage, int miplevel) override
+    {
+        try {
+            return seek(subimage, miplevel);
+        } catch (const std::bad_alloc&) {
+            errorfmt("{}: out of memory", m_name);
+            return false;
+        }
+    }
+
+    // The images are complete in memory once made and never change: rows of any subimage
+    // can be served without seeking, from any thread.
+    bool read_native_scanline(int subimage, int miplevel, int y, int z, void* data) override
+    {
+        try {
+            const Images* images = synthesized();
+            if (!images || subimage < 0 || subimage >= int(images->size()) || miplevel != 0)
+                return false;
+            const ImageBuf& img = (*images)[size_t(subimage)];
+            const ImageSpec& spec = img.spec();
+            return img.get_pixels(
+                ROI(spec.x, spec.x + spec.width, y, y + 1, z, z + 1), TypeFloat, data);
+        } catch (const std::bad_alloc&) {
+            errorfmt("{}: out of memory making the synthesis", m_name);
+            return false;
+        }
+    }
+
+private:
+    // 0: the synthesis, then its subbands if asked for; a volume: one subimage per z slice.
+    using Images = std::vector<ImageBuf>;
+
+    // Refuses a recipe whose result the host cannot hold, as the command line does, before
+    // announcing its spec: a host that trusts the spec allocates it (float pixels) and
+    // aborts, or its ImageCache asserts, when that fails; the synthesis holds the result
+    // too. memory_available() keeps --max-memory, $TEXSYN_MAX_MEMORY and ulimit -v.
+    static bool fits_in_memory(const ImageSpec& spec, std::string& error)
+    {
+        const double result_bytes = double(spec.width) * double(spec.height)
+            * double(std::max(spec.depth, 1)) * double(spec.nchannels) * sizeof(float);
+        return texsyn::check_memory(size_t(std::min(2.0 * result_bytes, 1e18)),
+            "a " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
+                + (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string())
+                + " result and the host's copy of it",
+            error);
+    }
+
+    bool open_recipe(const std::string& name, ImageSpec& newspec)
+    {
         close();
         std::string error;
         if (!texsyn::recipe_from_filename(name, m_recipe, error)
             || !texsyn::recipe_spec(m_recipe, m_spec, error)) {
             errorfmt("{}", texsyn::readable_message(error));
+            return false;
+        }
+        if (!fits_in_memory(m_spec, error)) {
+            errorfmt("{}: {}", name.substr(0, name.find('?')), error);
             return false;
         }
         m_name = name;
@@ -98,18 +175,7 @@ public:
         return true;
     }
 
-    bool close() override
-    {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        m_images.reset();
-        m_announced.clear();
-        m_subimage = 0;
-        return true;
-    }
-
-    int current_subimage() const override { return m_subimage; }
-
-    bool seek_subimage(int subimage, int miplevel) override
+    bool seek(int subimage, int miplevel)
     {
         if (subimage < 0 || miplevel != 0 || m_announced.empty())
             return false;
@@ -124,23 +190,6 @@ public:
         m_subimage = subimage;
         return true;
     }
-
-    // The images are complete in memory once made and never change: rows of any subimage
-    // can be served without seeking, from any thread.
-    bool read_native_scanline(int subimage, int miplevel, int y, int z, void* data) override
-    {
-        const Images* images = synthesized();
-        if (!images || subimage < 0 || subimage >= int(images->size()) || miplevel != 0)
-            return false;
-        const ImageBuf& img = (*images)[size_t(subimage)];
-        const ImageSpec& spec = img.spec();
-        return img.get_pixels(
-            ROI(spec.x, spec.x + spec.width, y, y + 1, z, z + 1), TypeFloat, data);
-    }
-
-private:
-    // 0: the synthesis, then its subbands if asked for; a volume: one subimage per z slice.
-    using Images = std::vector<ImageBuf>;
 
     // The synthesis, made on first use (by one thread; the others wait for it), checked
     // against the spec open() announced. Null (with errorfmt) if it fails.

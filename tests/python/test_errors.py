@@ -285,6 +285,17 @@ def test_recipes_and_analyses(stucco, bad_files):
     assert sorted(os.listdir(bad_files)) == before  # nothing left behind
 
 
+def test_recipe_files_over_a_megabyte_are_refused_from_their_size(tmp_path):
+    """A 10 GB sparse recipe file used to be read whole (20 GB resident)."""
+    huge = tmp_path / "huge.texsyn"
+    with open(huge, "wb") as f:
+        f.truncate(2 << 20)
+    refuses(lambda: texsyn.Recipe.load(huge), ValueError,
+            "huge.texsyn: is 2.0 MB, more than a recipe can be (1.0 MB)")
+    refuses(lambda: texsyn.Recipe.from_json(" " * (2 << 20)), ValueError,
+            "is 2.0 MB, more than a recipe can be (1.0 MB)")
+
+
 def test_analysis_save_refuses_a_device(stucco, tmp_path):
     """Given /dev/full, Analysis.save used to replace the machine's /dev/full with a regular
     file; a device or FIFO is refused and left as it is."""

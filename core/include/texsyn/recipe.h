@@ -52,6 +52,14 @@ struct Recipe {
 /// The recipe format's version, written as "texsyn_recipe": 1.
 constexpr int recipe_version = 1;
 
+/// The longest recipe texsyn reads (1 MB; a recipe is a few hundred bytes): a longer file
+/// is refused from its size, before it is read.
+constexpr size_t kMaxRecipeBytes = size_t(1) << 20;
+
+/// False (with "FILE: is 10.0 GB, more than a recipe can be (1.0 MB)") if the file
+/// `filename` is larger than kMaxRecipeBytes; checked from its size, without reading it.
+bool check_recipe_file_size(const std::string& filename, std::string& error);
+
 /// Reads a recipe from JSON `text`. Keys: texsyn_recipe (version, optional), sample (a
 /// string, or an array of strings for several; absent for a generator), method, seed,
 /// iscolorspace (a string, or an array, one per sample), tocolorspace, colorconfig,
@@ -61,7 +69,8 @@ constexpr int recipe_version = 1;
 /// error naming that method. Relative paths (samples, colorconfig, the options' input
 /// files) are resolved against `base_dir`. Fails (false, `error` naming the key and what
 /// was expected) on malformed JSON, unknown keys or methods, keys of another method, bad
-/// values, or a newer version. Does not call Recipe::validate().
+/// values, a newer version, or text longer than kMaxRecipeBytes. Does not call
+/// Recipe::validate().
 bool parse_recipe(
     const std::string& text, const std::string& base_dir, Recipe& recipe, std::string& error);
 
@@ -79,8 +88,8 @@ bool apply_recipe_arguments(
 /// file), "sample.png.texsyn" (no such file: the sample is "sample.png"; for a method that
 /// takes no sample, or one only if it exists, e.g. "noise.texsyn?method=cascade", none),
 /// either followed by "?REST arguments". Fails (false, `error`) if the name does not end
-/// in .texsyn, the JSON file is bad, the arguments are, or the result fails
-/// Recipe::validate().
+/// in .texsyn, the JSON file is bad or larger than kMaxRecipeBytes (checked before reading
+/// it), the arguments are, or the result fails Recipe::validate().
 bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& error);
 
 /// JSON text of `recipe` with every option of its method written out (but output files);

@@ -12,6 +12,7 @@
 #include <OpenImageIO/strutil.h>
 
 #include <texsyn/memory.h>
+#include <texsyn/recipe.h>
 
 #include "io_pvt.h"
 
@@ -86,6 +87,10 @@ std::unique_ptr<OIIO::ImageInput> open_checked(
     const std::string& filename, int copies, std::string& error)
 {
     if (!check_regular_file(filename, "an image", error))
+        return nullptr;
+    // A recipe is a few hundred bytes: a large one is refused from its size, before OIIO,
+    // whose readers (DICOM's) would read the whole file looking for a format that opens it.
+    if (OIIO::Strutil::iends_with(filename, ".texsyn") && !check_recipe_file_size(filename, error))
         return nullptr;
     // Read with an ImageInput of our own, not through OIIO's shared ImageCache: texsyn runs
     // inside OIIO tools (as their format plugin), whose cache must not be re-entered while

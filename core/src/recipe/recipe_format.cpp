@@ -18,6 +18,7 @@
 #include <texsyn/color.h>
 #include <texsyn/error_text.h>
 #include <texsyn/io.h>
+#include <texsyn/memory.h>
 #include <texsyn/stats.h>
 
 #include "json_strict_pvt.h"
@@ -340,9 +341,20 @@ bool Recipe::validate(std::string& error) const
 
 namespace {
 
+// "is 10.0 GB, more than a recipe can be (1.0 MB)".
+std::string too_large_for_a_recipe(uintmax_t bytes)
+{
+    return "is " + format_bytes(double(bytes)) + ", more than a recipe can be ("
+        + format_bytes(double(kMaxRecipeBytes)) + ")";
+}
+
 bool parse_recipe_text(
     const std::string& text, const std::string& base_dir, Recipe& recipe, std::string& error)
 {
+    if (text.size() > kMaxRecipeBytes) {
+        error = too_large_for_a_recipe(text.size());
+        return false;
+    }
     nlohmann::json j;
     try {
         j = detail::parse_json_strict(text, 64); // a recipe needs 2
@@ -449,6 +461,16 @@ bool apply_recipe_arguments(
     return false;
 }
 
+bool check_recipe_file_size(const std::string& filename, std::string& error)
+{
+    std::error_code ec;
+    const uintmax_t bytes = fs::file_size(filename, ec);
+    if (ec || bytes <= kMaxRecipeBytes)
+        return true;
+    error = filename + ": " + too_large_for_a_recipe(bytes);
+    return false;
+}
+
 bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& error)
 {
     const size_t q = name.find('?');
@@ -467,6 +489,8 @@ bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& 
     const std::string sample = base.substr(0, base.size() - 7);
     if (!named_sample) {
         base_dir = fs::path(base).parent_path().string();
+        if (!check_recipe_file_size(base, error))
+            return false;
         std::ifstream in(base, std::ios::binary);
         std::stringstream text;
         text << in.rdbuf();
