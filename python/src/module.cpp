@@ -8,6 +8,7 @@
 #include "py_methods.h"
 #include "py_objects.h"
 #include "py_recipe.h"
+#include "py_run.h"
 
 PYBIND11_MODULE(_texsyn, m)
 {
@@ -16,4 +17,7 @@ PYBIND11_MODULE(_texsyn, m)
     texsyn::python::register_objects(m);
     texsyn::python::register_methods(m);
     texsyn::python::register_recipe(m);
+    // Before the interpreter finalizes (and ends daemon threads), the runs in progress stop.
+    pybind11::module_::import("atexit").attr("register")(
+        pybind11::cpp_function(&texsyn::python::stop_runs_at_exit));
 }

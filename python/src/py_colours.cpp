@@ -8,6 +8,7 @@
 #include <texsyn/volume.h>
 
 #include "py_errors.h"
+#include "py_run.h"
 
 namespace py = pybind11;
 
@@ -64,7 +65,7 @@ py::object colour_to_python(OIIO::ImageBuf&& linear, const ColourOutput& out)
     std::string error;
     bool ok;
     {
-        py::gil_scoped_release release;
+        ReleaseGil release;
         ok = linear.spec().depth > 1
             ? convert_volume_colours(
                 *out.colors, linear, out.colors->scene_linear(), out.space, converted, error)

@@ -695,7 +695,7 @@ py::object apply_map_py(
     std::string error;
     bool ok = true;
     {
-        py::gil_scoped_release release;
+        ReleaseGil release;
         // Values are copied as they are: files read as their numbers.
         for (ImageArg* a : { &m, &i })
             if (a->kind == ImageKind::Path && ok)
@@ -718,7 +718,7 @@ py::object apply_map_py(
         m.pixels = std::move(tagged);
     }
     {
-        py::gil_scoped_release release;
+        ReleaseGil release;
         ok = apply_source_map(dst, m.pixels, i.pixels, opt);
     }
     if (!ok)

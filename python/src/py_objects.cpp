@@ -8,6 +8,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "py_errors.h"
+#include "py_run.h"
 
 namespace py = pybind11;
 
@@ -56,7 +57,7 @@ void register_objects(py::module_& m)
                 std::string error;
                 bool ok;
                 {
-                    py::gil_scoped_release release;
+                    ReleaseGil release;
                     ok = read_statistics(path.string(), *stats, error);
                 }
                 if (!ok)
@@ -70,7 +71,7 @@ void register_objects(py::module_& m)
                 std::string error;
                 bool ok;
                 {
-                    py::gil_scoped_release release;
+                    ReleaseGil release;
                     ok = write_statistics(path.string(), *a.stats, error);
                 }
                 if (!ok)
@@ -158,7 +159,7 @@ void register_objects(py::module_& m)
                 std::string error;
                 bool ok;
                 {
-                    py::gil_scoped_release release;
+                    ReleaseGil release;
                     ok = surface_display_rgb(*s.texture, *s.bake.colors, rgb, error)
                         && write_surface_ply(path.string(), *s.texture, &rgb, error);
                 }

@@ -40,7 +40,7 @@ Recipe load_recipe(const std::filesystem::path& name)
     std::string error;
     bool ok;
     {
-        py::gil_scoped_release release;
+        ReleaseGil release;
         ok = recipe_from_filename(absolute, recipe, error);
     }
     if (!ok)

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <exception>
+#include <set>
 #include <stdexcept>
 #include <thread>
 
@@ -32,7 +33,70 @@ int64_t int_keyword(const std::string& k, py::handle value, int64_t lo, int64_t 
             + std::to_string(lo) + ".." + std::to_string(hi));
 }
 
+// The runs in progress (RunControl::run), for stop_runs_at_exit.
+struct ActiveRuns {
+    std::mutex mutex;
+    std::condition_variable ended;
+    std::set<RunControl*> runs;
+    std::atomic<bool> finalizing { false }; ///< stop_runs_at_exit ran
+};
+
+ActiveRuns& active_runs()
+{
+    static ActiveRuns* runs = new ActiveRuns; // never destroyed: threads may outlive exit()
+    return *runs;
+}
+
+// A run in the registry while it lives.
+class Registration {
+public:
+    explicit Registration(RunControl* run)
+        : m_run(run)
+    {
+        std::lock_guard<std::mutex> lock(active_runs().mutex);
+        active_runs().runs.insert(run);
+    }
+    ~Registration()
+    {
+        std::lock_guard<std::mutex> lock(active_runs().mutex);
+        active_runs().runs.erase(m_run);
+        active_runs().ended.notify_all();
+    }
+    Registration(const Registration&) = delete;
+    Registration& operator=(const Registration&) = delete;
+
+private:
+    RunControl* m_run;
+};
+
+bool finalizing()
+{
+    return active_runs().finalizing || _Py_IsFinalizing();
+}
+
 } // namespace
+
+ReleaseGil::ReleaseGil()
+    : m_state(PyEval_SaveThread())
+{ }
+
+ReleaseGil::~ReleaseGil()
+{
+    while (finalizing()) // the process is ending: never return into Python
+        std::this_thread::sleep_for(std::chrono::hours(1));
+    PyEval_RestoreThread(m_state);
+}
+
+void stop_runs_at_exit()
+{
+    ActiveRuns& a = active_runs();
+    a.finalizing = true;
+    py::gil_scoped_release release; // the runs may be taking it to look at Python
+    std::unique_lock<std::mutex> lock(a.mutex);
+    for (RunControl* run : a.runs)
+        run->request_stop();
+    a.ended.wait_for(lock, std::chrono::minutes(1), [&] { return a.runs.empty(); });
+}
 
 uint64_t seed_keyword(py::handle value)
 {
@@ -78,10 +142,17 @@ std::function<void(float)> RunControl::progress()
     };
 }
 
+void RunControl::request_stop()
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_stop = true;
+    m_wake.notify_all();
+}
+
 void RunControl::look_at_python(bool step, float fraction)
 {
-    if (m_stop)
-        return; // stopped: nothing more is asked of Python
+    if (m_stop || finalizing())
+        return; // stopped, or Python is ending: nothing more is asked of it
     py::gil_scoped_acquire gil;
     try {
         if (PyErr_CheckSignals() != 0)
@@ -109,7 +180,9 @@ bool RunControl::run(const std::function<bool()>& work)
         m_wake.notify_all();
     });
     try {
-        py::gil_scoped_release release;
+        ReleaseGil release;
+        // Out of the registry (after the worker's join below) before the GIL is taken back.
+        const Registration registered(this);
         std::unique_lock<std::mutex> lock(m_mutex);
         while (!m_done) {
             m_wake.wait_for(lock, python_interval, [this] { return m_done || m_step_pending; });
@@ -125,17 +198,16 @@ bool RunControl::run(const std::function<bool()>& work)
                 m_wake.notify_all();
             }
         }
-    } catch (...) { // (taking the GIL or a lock failed) the run must not outlive this frame
-        {
-            std::lock_guard<std::mutex> lock(m_mutex);
-            m_stop = true;
-            m_wake.notify_all();
-        }
-        py::gil_scoped_release release;
+        lock.unlock();
         worker.join();
+    } catch (...) { // (taking the GIL or a lock failed) the run must not outlive this frame
+        request_stop();
+        if (worker.joinable()) {
+            ReleaseGil release;
+            worker.join();
+        }
         throw;
     }
-    worker.join();
     if (failure)
         std::rethrow_exception(failure);
     return ok;

@@ -26,6 +26,27 @@ uint64_t seed_keyword(pybind11::handle value);
 /// ValueError otherwise.
 int threads_keyword(pybind11::handle value);
 
+/// Releases the GIL for library work, like pybind11's gil_scoped_release, but never takes
+/// it back while the interpreter is finalizing: a thread that did (a daemon thread still in
+/// texsyn when Python exits) would be ended by pthread_exit inside a destructor, which ends
+/// the process with std::terminate. Such a thread waits instead until the process exits.
+class ReleaseGil {
+public:
+    ReleaseGil();
+    ~ReleaseGil();
+    ReleaseGil(const ReleaseGil&) = delete;
+    ReleaseGil& operator=(const ReleaseGil&) = delete;
+
+private:
+    PyThreadState* m_state;
+};
+
+/// Registered with Python's atexit at import: stops every run in progress (as Ctrl-C
+/// would) and waits, without the GIL, until each has ended (they end within about a second;
+/// at most a minute), so that no library work outlives the interpreter. From then on
+/// ReleaseGil never takes the GIL back.
+void stop_runs_at_exit();
+
 /// One run's link to Python. Construct with the GIL held, give the run progress() and
 /// stop() (RunSettings), and start it with run().
 class RunControl {
@@ -60,6 +81,9 @@ public:
     /// With the GIL held, after a run: re-raises the Python exception that stopped it, if
     /// one did (else returns).
     void raise_if_stopped();
+
+    /// From any thread: stops the run (stop_runs_at_exit).
+    void request_stop();
 
     /// What a failed run's message becomes: ValueError if the run was refused before it
     /// reported any progress (a memory estimate beyond the limit, options that cannot apply

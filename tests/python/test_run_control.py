@@ -180,6 +180,40 @@ def test_ctrl_c_stops_a_run_within_about_a_second(tmp_path, samples, method):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["long_run.py"]
 
 
+@pytest.mark.parametrize("method", ["patch", "fill"])
+def test_the_interpreter_exits_cleanly_while_a_daemon_thread_is_in_a_run(tmp_path, method):
+    """Python exiting while a daemon thread is inside texsyn used to end in `terminate
+    called without an active exception` (or a segfault): the run is stopped at exit and the
+    process ends normally, soon."""
+    call = {
+        "patch": "texsyn.patch(image, size=(2048, 2048), threads=2, progress=progress)",
+        "fill": "texsyn.fill(image, mask=mask, threads=2, progress=progress)",
+    }[method]
+    script = tmp_path / "exit_during_run.py"
+    script.write_text(textwrap.dedent(f"""\
+        import threading
+        import numpy as np
+        import texsyn
+        rng = np.random.default_rng(1)
+        image = rng.random((512, 512, 3), dtype=np.float32)
+        mask = np.zeros((512, 512), np.float32)
+        mask[96:416, 96:416] = 1
+        started = threading.Event()
+        def progress(fraction):
+            started.set()
+        threading.Thread(target=lambda: {call}, daemon=True).start()
+        started.wait(60)
+        print("exiting", flush=True)
+        """))
+    begun = time.monotonic()
+    child = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                           env=os.environ.copy(), timeout=120)
+    assert child.returncode == 0, child.stderr
+    assert child.stdout == "exiting\n"
+    assert "terminate" not in child.stderr and child.stderr == "", child.stderr
+    assert time.monotonic() - begun < 30
+
+
 def test_other_python_threads_run_during_a_synthesis(stucco):
     counter = [0]
     done = threading.Event()
