@@ -127,6 +127,27 @@ TEST(Recipe, NulBytesAreRefused)
     EXPECT_EQ(error, "malformed JSON (a NUL byte at offset 21)");
 }
 
+// A NUL escaped inside a string ("a.png\u0000.exr") cut the file name where the C library
+// read it, so another file was read: control characters in a key or value are refused, in
+// JSON and in REST arguments.
+TEST(Recipe, ControlCharactersInNamesAndValuesAreRefused)
+{
+    Recipe r;
+    std::string error;
+    EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png\u0000.exr", "size": "8x8" })", "", r, error));
+    EXPECT_EQ(error,
+        "sample: contains a control character (\"a.png\\x00.exr\"); a recipe's names and "
+        "values cannot");
+    EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "size": "8x8\n" })", "", r, error));
+    EXPECT_EQ(error.rfind("size: contains a control character", 0), 0u) << error;
+    EXPECT_FALSE(parse_recipe(R"({ "sample": "a.png", "si\u0001ze": "8x8" })", "", r, error));
+    r = with_sample("a.png");
+    EXPECT_FALSE(apply_recipe_arguments("size=8x8%0A", "", r, error));
+    EXPECT_EQ(error.rfind("size: contains a control character", 0), 0u) << error;
+    EXPECT_TRUE(parse_recipe(R"({ "sample": "a b\u00e9.png", "size": "8x8" })", "", r, error))
+        << error;
+}
+
 // A REST name may hold a million keys (Python takes names of any length): the check for a
 // key given twice took quadratic time (80 000 keys: 12 s; a million: hours).
 TEST(Recipe, ManyRestKeysAreCheckedInLinearTime)

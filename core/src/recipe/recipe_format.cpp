@@ -178,8 +178,28 @@ using KeyValues = std::vector<std::pair<std::string, std::vector<std::string>>>;
 // Sets the keys of one JSON object or one REST string: `method` first, wherever it stands,
 // so that the options after it and before it are the same method's; then a preset (a named
 // set of other options), so that the options given override it; then the rest.
+// False (with "KEY: contains a control character (…)") if a key or value holds one: a NUL
+// would cut a file name where the C library reads it, so another file would be read.
+bool free_of_control_characters(const KeyValues& pairs, std::string& error)
+{
+    auto control = [](const std::string& t) {
+        return std::any_of(t.begin(), t.end(),
+            [](char c) { return (static_cast<unsigned char>(c) < 0x20) || c == 0x7f; });
+    };
+    for (const auto& [key, values] : pairs)
+        for (const std::string& text : values)
+            if (control(key) || control(text)) {
+                error = key + ": contains a control character (\"" + text
+                    + "\"); a recipe's names and values cannot";
+                return false;
+            }
+    return true;
+}
+
 bool set_keys(Recipe& r, const KeyValues& pairs, const std::string& base_dir, std::string& error)
 {
+    if (!free_of_control_characters(pairs, error))
+        return false;
     auto rank = [&r](const std::string& key) {
         if (key == "method")
             return 0;
