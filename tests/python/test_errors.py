@@ -217,6 +217,8 @@ def test_bad_masks(bricks, bad_files):
     nan = mask.copy()
     nan[0, 0] = np.nan
     refuses(lambda: texsyn.fill(bricks, mask=nan), ValueError, "is NaN")
+    refuses(lambda: texsyn.fill(bricks, mask=mask * 2.5), ValueError,
+            "the mask has the value 2.5 at 40,40; its values must be in 0..1")
     refuses(lambda: texsyn.fill(bricks, mask=mask, sample=bricks[:, :, :1].copy()), ValueError,
             "the sample has 1 channel and the image 3 channels")
 

@@ -400,6 +400,16 @@ TEST(Fill, BadMasksAreRefused)
     dst.clear();
     EXPECT_FALSE(texture_fill(dst, grass, nan_mask, seeded(1)));
     EXPECT_NE(dst.geterror().find("mask: "), std::string::npos) << dst.geterror();
+    // A mask blends by its value: outside 0..1 it would extrapolate past the image's values.
+    for (const float beyond : { 2.5f, -0.5f }) {
+        OIIO::ImageBuf over = ellipse_mask(64, 64, 30, 30, 5, 5);
+        over.setpixel(30, 31, &beyond);
+        dst.clear();
+        EXPECT_FALSE(texture_fill(dst, grass, over, seeded(1)));
+        EXPECT_EQ(dst.geterror(),
+            "the mask has the value " + std::string(beyond > 0 ? "2.5" : "-0.5")
+                + " at 30,31; its values must be in 0..1");
+    }
     // A hole too large for its small image at the levels asked for.
     FillOptions opt = seeded(1);
     opt.levels = 5;

@@ -26,7 +26,8 @@ struct FillWithFiles {
             t.file("mask", &O::mask, FileUse::ReadData, "",
                 "the hole: a one-channel image of the image's size, read as its numbers; "
                 "pixels above 0 are filled (values between 0 and 1 blend the fill over the "
-                "image), pixels at 0 are kept bit for bit. Required");
+                "image), pixels at 0 are kept bit for bit; values outside 0..1 are refused. "
+                "Required");
             t.file("exclude", &O::exclude, FileUse::ReadData, "",
                 "a one-channel image of the image's size: no patch the fill copies touches "
                 "a pixel above 0 (other markers, a logo, the edge of a set)");

@@ -4,6 +4,7 @@
 #include <texsyn/fill.h>
 
 #include <algorithm>
+#include <cstdio>
 
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -44,6 +45,19 @@ bool control_plane(
         error = std::string("the ") + what + " is " + layout_text(p)
             + "; it must be one channel of the image's size (" + std::to_string(w) + "x"
             + std::to_string(h) + ")";
+        return false;
+    }
+    // A mask blends (1 - m) x image + m x fill: outside 0..1 it would extrapolate.
+    const float* values = p.channels[0].data();
+    const float* end = values + p.channels[0].size();
+    const float* outside = std::find_if(values, end, [](float v) { return v < 0.0f || v > 1.0f; });
+    if (outside != end) {
+        const size_t at = size_t(outside - values);
+        char value[32];
+        std::snprintf(value, sizeof(value), "%g", double(*outside));
+        error = std::string("the ") + what + " has the value " + value + " at "
+            + std::to_string(at % size_t(w)) + "," + std::to_string(at / size_t(w))
+            + "; its values must be in 0..1";
         return false;
     }
     plane = std::move(p.channels[0]);
