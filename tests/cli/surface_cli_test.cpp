@@ -2,6 +2,7 @@
 // --choosy-surface end to end: the PLY it writes, determinism at any thread count, and bad
 // meshes and settings refused with one line, exit 1 and no output.
 #include <cstring>
+#include <sys/stat.h>
 
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -102,6 +103,11 @@ TEST_F(SurfaceCli, BadMeshesAreRefusedWithOneLine)
             "list uchar int vertex_indices\nend_header\n\x01\x02",
             "" },
         { "mesh.stl", tetra, "" },
+        { "nan.ply",
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
+            "end_header\n0 0 0\n1 0 0\n0 1e39 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n",
+            "line 12: '0 1e39 0': vertex 3's y: '1e39' is not a finite number" },
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -119,6 +125,18 @@ TEST_F(SurfaceCli, BadMeshesAreRefusedWithOneLine)
         EXPECT_FALSE(fs::exists(dir / "out.ply"));
         fs::remove(dir / c.name);
     }
+}
+
+// An OBJ's material library is never opened (issue #34): one naming a FIFO hung the run.
+TEST_F(SurfaceCli, MaterialLibrariesTheMeshNamesAreNotRead)
+{
+    ASSERT_EQ(mkfifo((dir / "skin.mtl").c_str(), 0600), 0);
+    spit(dir / "tetra.obj",
+        "mtllib skin.mtl\nusemtl skin\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+        "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
+    CliRun r = texsyn("flowers.png --choosy-surface:mesh=tetra.obj:levels=2 -o tetra.ply");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::is_regular_file(dir / "tetra.ply"));
 }
 
 // Quads are split into triangles: a cube of 6 quads grows like a mesh of 12 triangles.

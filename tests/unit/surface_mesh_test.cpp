@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sys/stat.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -68,7 +69,7 @@ protected:
         const std::string printed
             = ::testing::internal::GetCapturedStderr() + ::testing::internal::GetCapturedStdout();
         EXPECT_FALSE(read) << name;
-        EXPECT_EQ(printed, "") << name; // OpenMesh's own messages are silenced
+        EXPECT_EQ(printed, "") << name;
         EXPECT_TRUE(mesh.vertices.empty() && mesh.faces.empty()) << name;
         EXPECT_EQ(error.find('\n'), std::string::npos) << error;
         EXPECT_EQ(error.rfind(path + ": ", 0), 0u) << error;
@@ -105,6 +106,31 @@ float le_float(const char* p)
     float f;
     std::memcpy(&f, &bits, 4);
     return f;
+}
+
+// The data of a binary PLY tetrahedron (float x y z; a face count of `count_bytes`, uint
+// indices), little- or big-endian.
+std::string binary_tetrahedron(bool big_endian, int count_bytes)
+{
+    std::string data;
+    auto put = [&](uint32_t v, int bytes) {
+        for (int k = 0; k < bytes; ++k)
+            data.push_back(char(v >> (8 * (big_endian ? bytes - 1 - k : k))));
+    };
+    const float points[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    for (const auto& p : points)
+        for (float c : p) {
+            uint32_t bits;
+            std::memcpy(&bits, &c, 4);
+            put(bits, 4);
+        }
+    const uint32_t faces[4][3] = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 } };
+    for (const auto& f : faces) {
+        put(3, count_bytes);
+        for (uint32_t v : f)
+            put(v, 4);
+    }
+    return data;
 }
 
 double distance_to_surface(const SurfaceProjector& projector, const Imath::V3f& p)
@@ -281,30 +307,13 @@ TEST_F(SurfaceMeshTest, SurfacesTexsynCannotGrowOnAreRefused)
         EXPECT_EQ(read_error(f.name, f.bytes), f.error);
 }
 
-TEST_F(SurfaceMeshTest, BadPlyFilesAreRefusedBeforeOpenMeshReadsThem)
+TEST_F(SurfaceMeshTest, BadPlyFilesAreRefusedWithWhatIsWrong)
 {
     const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex 4\n"
                                "property float x\nproperty float y\nproperty float z\n"
                                "element face 4\nproperty list uchar int vertex_indices\n"
                                "end_header\n";
-    std::string data;
-    auto put32 = [&](uint32_t v) {
-        for (int k = 0; k < 4; ++k)
-            data.push_back(char(v >> (8 * k)));
-    };
-    const float points[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-    for (const auto& p : points)
-        for (float c : p) {
-            uint32_t bits;
-            std::memcpy(&bits, &c, 4);
-            put32(bits);
-        }
-    const uint32_t faces[4][3] = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 } };
-    for (const auto& f : faces) {
-        data.push_back(3);
-        for (uint32_t v : f)
-            put32(v);
-    }
+    const std::string data = binary_tetrahedron(false, 1);
     // The whole file reads; one byte less is truncated.
     SurfaceMesh mesh;
     std::string error;
@@ -352,6 +361,137 @@ TEST_F(SurfaceMeshTest, BadPlyFilesAreRefusedBeforeOpenMeshReadsThem)
     EXPECT_EQ(read_error("binary.ply", binary),
         "header line 3: unknown keyword '??"
         "?'");
+}
+
+// Issue #34: meshes from untrusted sources. Files an OBJ names are never opened (a FIFO
+// there hung every host), ASCII PLY tokens are validated (OpenMesh's reader grew without
+// bound or made up indices on them), and what other tools write is read.
+TEST_F(SurfaceMeshTest, MaterialLibrariesAnObjNamesAreNeverOpened)
+{
+    const std::string fifo = (dir / "materials.mtl").string();
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    // With a FIFO opened for reading, this read would block forever (the test would time out).
+    const std::string obj = write("tetra.obj",
+        std::string("mtllib materials.mtl\nmtllib ../../../../dev/zero\nusemtl skin\no t\n")
+            + tetrahedron_obj);
+    SurfaceMesh mesh;
+    std::string error;
+    ASSERT_TRUE(read_surface_mesh(obj, mesh, error)) << error;
+    EXPECT_EQ(mesh.faces.size(), 4u);
+}
+
+TEST_F(SurfaceMeshTest, AsciiPlyTokensAreValidatedWithTheirLine)
+{
+    const std::string header
+        = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+          "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
+          "end_header\n";
+    const std::string faces = "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+    auto with_vertex_2 = [&](const std::string& line) {
+        return header + "0 0 0\n" + line + "\n0 1 0\n0 0 1\n" + faces;
+    };
+    SurfaceMesh mesh;
+    std::string error;
+    ASSERT_TRUE(read_surface_mesh(write("good.ply", with_vertex_2("1 0 0")), mesh, error)) << error;
+    struct Case {
+        const char* line;
+        std::string error;
+    };
+    const Case cases[] = {
+        { "nan 0 0",
+            "line 11: 'nan 0 0': vertex 2's x: 'nan' is not a finite number of PLY "
+            "type float" },
+        { "1 inf 0",
+            "line 11: '1 inf 0': vertex 2's y: 'inf' is not a finite number of PLY "
+            "type float" },
+        { "1 0 1e39",
+            "line 11: '1 0 1e39': vertex 2's z: '1e39' is not a finite number of "
+            "PLY type float" },
+        { "x 0 0",
+            "line 11: 'x 0 0': vertex 2's x: 'x' is not a finite number of PLY type "
+            "float" },
+        { "1 0", "line 11: '1 0': the line ends before vertex 2's z (one element per line)" },
+        { "1 0 0 0",
+            "line 11: '1 0 0 0': vertex 2 has more values than the header's "
+            "properties (one element per line)" },
+    };
+    for (const Case& c : cases)
+        for (int repeat = 0; repeat < 3; ++repeat) // the same answer every time
+            EXPECT_EQ(read_error("bad.ply", with_vertex_2(c.line)), c.error) << c.line;
+
+    const std::string triangle = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                 "property float y\nproperty float z\nelement face 1\n"
+                                 "property list uchar int vertex_indices\nend_header\n"
+                                 "0 0 0\n1 0 0\n0 1 0\n";
+    EXPECT_EQ(read_error("minus.ply", triangle + "3 0 -1 2\n"),
+        "face 1 has the vertex index -1 (PLY counts from 0)");
+    EXPECT_EQ(read_error("half.ply", triangle + "3 0 1.5 2\n"),
+        "line 13: '3 0 1.5 2': face 1's vertex_indices: '1.5' is not an integer of PLY type "
+        "int");
+    EXPECT_EQ(read_error("count.ply", triangle + "300 0 1 2\n"),
+        "line 13: '300 0 1 2': face 1's vertex_indices count: '300' is not an integer of PLY "
+        "type uchar");
+    EXPECT_EQ(read_error("long.ply", triangle + std::string(kMaxMeshLineBytes + 1, '1')),
+        "line 13: '" + std::string(48, '1') + "...': longer than 16 MiB (not PLY data?)");
+}
+
+TEST_F(SurfaceMeshTest, IndicesBeyondAnyIntAreNamedAsGiven)
+{
+    EXPECT_EQ(read_error("far.obj", triangle_obj + "f 1 2 3000000000\n"),
+        "face 1 refers to vertex 3000000000, but the file has 3 vertices");
+    EXPECT_EQ(read_error("long.obj", triangle_obj + "f 1 2 " + std::string(kMaxMeshLineBytes, '3')),
+        "line 4: 'f 1 2 " + std::string(42, '3') + "...': longer than 16 MiB (not an OBJ file?)");
+    EXPECT_EQ(read_error("nanuv.obj", triangle_obj + "vt nan 0\nf 1/1 2/1 3/1\n"),
+        "line 4: 'vt nan 0': a texture coordinate needs one or two finite numbers (u v)");
+}
+
+TEST_F(SurfaceMeshTest, PlyListCountsOfAnyIntegerTypeAndMeshLabTexcoordsAreRead)
+{
+    // A quad and a triangle, counts as ushort (and char), corner UVs as MeshLab writes them.
+    for (const char* count : { "ushort", "char", "uint8", "int" }) {
+        const std::string ply = write("meshlab.ply",
+            std::string("ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\n"
+                        "property float y\nproperty float z\nelement face 2\nproperty list ")
+                + count + " int vertex_indices\nproperty list " + count
+                + " float texcoord\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n"
+                  "4 0 1 2 3 8 0 0 0.5 0 0.5 1 0 1\n3 1 4 2 6 0.5 0 1 0 0.5 1\n");
+        SurfaceMesh mesh;
+        std::string error;
+        ASSERT_TRUE(read_surface_mesh(ply, mesh, error)) << count << ": " << error;
+        ASSERT_EQ(mesh.faces.size(), 3u) << count;
+        ASSERT_EQ(mesh.face_uvs.size(), 3u) << count;
+        EXPECT_EQ(mesh.uvs.size(), 5u) << count; // (0.5,0) and (0.5,1) are shared
+        for (size_t f = 0; f < 2; ++f)           // the quad's corners: u is x / 2, v is y
+            for (int k = 0; k < 3; ++k)
+                EXPECT_EQ(mesh.uvs[mesh.face_uvs[f][k]],
+                    Imath::V2f(
+                        mesh.vertices[mesh.faces[f][k]].x / 2, mesh.vertices[mesh.faces[f][k]].y))
+                    << count;
+        EXPECT_EQ(mesh.uvs[mesh.face_uvs[2][1]], Imath::V2f(1, 0)) << count;
+    }
+    EXPECT_EQ(read_error("odd.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                  "property list uchar float texcoord\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+                  "3 0 1 2 4 0 0 1 0\n"),
+        "face 1 has 3 corners but 4 texcoord values (two per corner)");
+}
+
+TEST_F(SurfaceMeshTest, BigEndianPlyReadsAsLittleEndian)
+{
+    const std::string data = binary_tetrahedron(true, 2);
+    const std::string ply = write("big.ply",
+        "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 4\n"
+        "property list ushort uint vertex_indices\nend_header\n"
+            + data);
+    SurfaceMesh mesh;
+    std::string error;
+    ASSERT_TRUE(read_surface_mesh(ply, mesh, error)) << error;
+    SurfaceMesh tetrahedron;
+    ASSERT_TRUE(read_surface_mesh(write("tetra.obj", tetrahedron_obj), tetrahedron, error));
+    EXPECT_EQ(mesh.vertices, tetrahedron.vertices);
+    EXPECT_EQ(mesh.faces, tetrahedron.faces);
 }
 
 TEST_F(SurfaceMeshTest, MissingFilesAndFoldersAreNamed)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// What the surface mesh sources share besides surface_mesh_pvt.h: PLY headers (read to
-// check a file before OpenMesh reads it, and to verify a written one) and the edges of a
-// face list.
+// What the surface mesh sources share besides surface_mesh_pvt.h: the OBJ and PLY readers'
+// common record, PLY headers (read by the PLY reader, and to verify a written file) and the
+// edges of a face list.
 #pragma once
 
 #include <array>
@@ -11,10 +11,17 @@
 #include <string>
 #include <vector>
 
+#include <OpenImageIO/Imath.h>
+
 namespace texsyn::detail {
+
+/// PLY's scalar types (both spellings of each are read).
+enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
 
 struct PlyProperty {
     std::string name;
+    PlyType type = PlyType::Float32; ///< of the value (of each item for a list)
+    PlyType count_type = PlyType::UInt8;
     int size = 0;       ///< bytes of one value (of each list item for a list)
     int count_size = 0; ///< 0 for a scalar; bytes of the item count for a list
 };
@@ -30,6 +37,7 @@ struct PlyHeader {
     Format format = Format::Ascii;
     std::vector<PlyElement> elements;
     uint64_t bytes = 0; ///< the header's length, up to and including "end_header\n"
+    uint64_t lines = 0; ///< the header's lines, "end_header" included
     std::vector<std::string> comments;
 
     /// The element called `name`, or null.
@@ -41,27 +49,59 @@ struct PlyHeader {
 /// comments, obj_info lines and end_header. False with a reason (no file name) otherwise.
 bool read_ply_header(std::istream& in, PlyHeader& header, std::string& reason);
 
-/// What a mesh file announces, from a pass over it that allocates nothing per element:
-/// OBJ's v, vt and f lines (and the triangles its faces fan into), or a PLY header's vertex
-/// and face counts (triangles unknown: 0).
-struct MeshFileCounts {
-    uint64_t vertices = 0, texcoords = 0, faces = 0, triangles = 0;
-    bool face_texcoords = false; ///< OBJ faces give `v/vt` corners
+/// The longest line a mesh file may have (a polygon of ~1 million corners): a file of one
+/// endless line is refused instead of read into memory whole.
+constexpr size_t kMaxMeshLineBytes = 16 << 20;
+
+enum class LineRead { Line, Unterminated, End, TooLong };
+
+/// The next line of `in` without its '\n' (a CR stays): Line, Unterminated (the file ends
+/// without a line break after it), End (nothing left), or TooLong (more than
+/// kMaxMeshLineBytes; `line` then holds the first kMaxMeshLineBytes).
+LineRead read_mesh_line(std::istream& in, std::string& line);
+
+/// "cannot be opened (REASON)" from errno, after a failed open of a mesh file.
+std::string cannot_open_mesh();
+
+/// "line N: 'TEXT': " with TEXT cut to a readable length (and without a CR line end).
+std::string at_line(uint64_t number, std::string line);
+
+/// Whether `count` exceeds kMaxMeshElements; if so `what` says "has more than ... WHAT".
+bool too_many_mesh_elements(uint64_t count, const std::string& what_counted, std::string& what);
+
+/// A mesh file's polygons as the file gives them, before any check of their indices:
+/// what the OBJ and PLY readers hand to read_surface_mesh().
+struct MeshRecord {
+    std::vector<Imath::V3f> points;
+    std::vector<int64_t> corners; ///< polygon vertex indices from 0, polygon after polygon
+    std::vector<size_t> polygon_start { 0 };
+    std::vector<Imath::V2f> corner_uvs; ///< one per corner, or empty
+    std::vector<Imath::V2f> vertex_uvs; ///< one per point, or empty
+
+    size_t polygons() const { return polygon_start.size() - 1; }
+    /// Ends a polygon whose corners were appended to `corners`.
+    void end_polygon() { polygon_start.push_back(corners.size()); }
 };
 
-/// Checks an OBJ file line by line before OpenMesh reads it, for what OpenMesh's reader
-/// would drop or guess silently: a vertex line without three finite numbers, a face line
-/// with fewer than 3 corners, an index that is not a number, 0 or before the first vertex,
-/// a vertex repeated in one face, corners with and without texture coordinates mixed, and
-/// more than kMaxMeshElements vertices, UVs or triangles (refused as soon as counted).
-/// False with "line N: ..." (no file name) otherwise.
-bool prescan_obj(const std::string& path, MeshFileCounts& counts, std::string& what);
+/// Reads a Wavefront OBJ file's v, vt and f lines (every other line, mtllib included, is
+/// skipped: no file the mesh names is opened) into `record`, validating every token: a
+/// vertex line without three finite numbers, a UV line without finite numbers, a face line
+/// with fewer than 3 corners, an index that is not a whole number, 0, before the first
+/// vertex or naming a vt line the file does not have, a vertex repeated in one face, corners
+/// with and without texture coordinates mixed, and more than kMaxMeshElements vertices,
+/// UVs or triangles are refused as soon as read, with "line N: 'TEXT': ..." (no file name)
+/// in `what`. Indices beyond the vertices are left for the caller to report.
+bool read_obj_record(const std::string& path, MeshRecord& record, std::string& what);
 
-/// Checks a PLY file's header before OpenMesh reads it: a vertex element with x, y, z, a
-/// face element with a vertex_indices (or vertex_index) list, at most kMaxMeshElements
-/// of each, and enough data for them (binary: the bytes the smallest faces take; ASCII:
-/// one line per element, the last one ended). False with a reason (no file name) otherwise.
-bool prescan_ply(const std::string& path, MeshFileCounts& counts, std::string& what);
+/// Reads a PLY file (ASCII, binary little- or big-endian) into `record`: the vertex
+/// element's x, y, z and u, v (or s, t, texture_u, texture_v), the face element's
+/// vertex_indices (or vertex_index) list, any integer count type, and a per-face texcoord
+/// list (two values per corner, as MeshLab writes it); other elements and properties are
+/// read past. Refuses, with a reason in `what` (no file name), a header without those,
+/// more than kMaxMeshElements of anything, data that stops before the header's counts
+/// end, a negative index, and in ASCII files any token that is not a number of its
+/// property's type (an integer in range, a finite float), with its line number.
+bool read_ply_record(const std::string& path, MeshRecord& record, std::string& what);
 
 /// One face's use of an edge: the edge's vertices (a < b), the face, and whether the face
 /// goes from a to b (forward) or from b to a.

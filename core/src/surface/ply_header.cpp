@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // PLY headers (Turk's format as MeshLab, Blender and OpenMesh write it). Only the header:
-// OpenMesh reads the data.
+// ply_read.cpp reads the data.
 #include <sstream>
 
 #include "mesh_detail_pvt.h"
@@ -9,18 +9,28 @@ namespace texsyn::detail {
 
 namespace {
 
-// Bytes of one value of a PLY scalar type (both spellings), or 0.
-int ply_type_size(const std::string& type)
+// A PLY scalar type's name (either spelling) as its type and its bytes, or 0 bytes.
+int ply_type(const std::string& name, PlyType& type)
 {
-    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8")
-        return 1;
-    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16")
-        return 2;
-    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float"
-        || type == "float32")
-        return 4;
-    if (type == "double" || type == "float64")
-        return 8;
+    static const struct {
+        const char *name, *alias;
+        PlyType type;
+        int size;
+    } types[] = {
+        { "char", "int8", PlyType::Int8, 1 },
+        { "uchar", "uint8", PlyType::UInt8, 1 },
+        { "short", "int16", PlyType::Int16, 2 },
+        { "ushort", "uint16", PlyType::UInt16, 2 },
+        { "int", "int32", PlyType::Int32, 4 },
+        { "uint", "uint32", PlyType::UInt32, 4 },
+        { "float", "float32", PlyType::Float32, 4 },
+        { "double", "float64", PlyType::Float64, 8 },
+    };
+    for (const auto& t : types)
+        if (name == t.name || name == t.alias) {
+            type = t.type;
+            return t.size;
+        }
     return 0;
 }
 
@@ -43,8 +53,13 @@ bool read_ply_header(std::istream& in, PlyHeader& header, std::string& reason)
     std::string line;
     bool have_format = false;
     for (int number = 1;; ++number) {
-        if (!std::getline(in, line)) {
+        const LineRead read = read_mesh_line(in, line);
+        if (read == LineRead::End || read == LineRead::Unterminated) {
             reason = "the PLY header has no end_header line";
+            return false;
+        }
+        if (read == LineRead::TooLong) {
+            reason = "the PLY header is longer than 1 MiB";
             return false;
         }
         header.bytes += line.size() + 1;
@@ -64,8 +79,10 @@ bool read_ply_header(std::istream& in, PlyHeader& header, std::string& reason)
             }
             continue;
         }
-        if (keyword == "end_header")
+        if (keyword == "end_header") {
+            header.lines = uint64_t(number);
             break;
+        }
         if (keyword == "comment" || keyword == "obj_info") {
             const size_t at = line.find_first_not_of(" \t", keyword.size());
             header.comments.push_back(at == std::string::npos ? "" : line.substr(at));
@@ -104,14 +121,15 @@ bool read_ply_header(std::istream& in, PlyHeader& header, std::string& reason)
             if (type == "list") {
                 std::string count_type;
                 words >> count_type >> type;
-                property.count_size = ply_type_size(count_type);
-                if (property.count_size == 0 || property.count_size == 8) {
+                property.count_size = ply_type(count_type, property.count_type);
+                if (property.count_size == 0 || property.count_type == PlyType::Float32
+                    || property.count_type == PlyType::Float64) {
                     reason = "header line " + std::to_string(number) + ": list count type '"
                         + count_type + "' is not an integer type";
                     return false;
                 }
             }
-            property.size = ply_type_size(type);
+            property.size = ply_type(type, property.type);
             words >> property.name;
             if (property.size == 0 || property.name.empty() || header.elements.empty()) {
                 reason = "header line " + std::to_string(number) + ": '" + line

@@ -37,17 +37,17 @@ struct SurfaceMesh {
 /// refused from the file's header or line counts, before anything is allocated for them.
 constexpr size_t kMaxMeshElements = 50'000'000;
 
-/// Reads a Wavefront OBJ or a PLY (ASCII or binary) file through OpenMesh's readers, chosen
-/// by the extension (.obj, .ply, any case). Polygons become triangle fans from their first
-/// corner. UVs: OBJ's per-corner `f v/vt` (a vertex on a UV seam keeps one UV per side;
-/// `vt` lines with equal values become one UV), or PLY's per-vertex u,v (face_uvs are then
-/// the faces); none if the file has none. Fails, naming the file, if it is missing or not
-/// a regular file, has another extension, is truncated, has more than kMaxMeshElements
-/// vertices, faces or UVs, a face line with fewer than 3 vertices, an index that is not a
-/// number, out of range or repeated in one face, texture coordinates on some faces only,
-/// a coordinate that is not a finite number, or fails check_surface_mesh(). OpenMesh's own
-/// messages are silenced while it reads (reads are serialised: OpenMesh's readers keep
-/// state), and nothing is repaired: a face OpenMesh would drop or re-attach is refused.
+/// Reads a Wavefront OBJ or a PLY (ASCII or binary) file with texsyn's own readers,
+/// chosen by the extension (.obj, .ply, any case). Polygons become triangle fans from their
+/// first corner. UVs: OBJ's per-corner `f v/vt` or PLY's per-face texcoord lists (a vertex
+/// on a UV seam keeps one UV per side; equal values become one UV), or PLY's per-vertex
+/// u,v (face_uvs are then the faces); none if the file has none. No other file is opened
+/// (an OBJ's mtllib is not read). Fails, naming the file, if it is missing or not a regular
+/// file, has another extension, is truncated, has more than kMaxMeshElements vertices,
+/// faces or UVs, a face with fewer than 3 vertices, an index that is not a number, out of
+/// range or repeated in one face, texture coordinates on some faces only, a token that is
+/// not a number of its type (with its line), or fails check_surface_mesh(). Nothing is
+/// repaired: a face another reader would drop or re-attach is refused.
 bool read_surface_mesh(const std::string& path, SurfaceMesh& mesh, std::string& error);
 
 /// Whether `mesh` is a surface texsyn can grow a texture on (SurfaceMesh's invariants):
