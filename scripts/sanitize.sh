@@ -41,7 +41,7 @@ case "$kind" in
     tests="image io_safety options methods recipe stats pyramid histogram"
     tests="$tests robustness_cli plugin result_cache cli"
     targets="texsyn_cli texsyn_imageio fuzz_option_strings fuzz_recipe fuzz_analysis_file"
-    targets="$targets fuzz_image_analysis fuzz_mesh $(printf '%s_test ' $tests)"
+    targets="$targets fuzz_image_analysis fuzz_mesh fuzz_nested_recipes $(printf '%s_test ' $tests)"
     regex="^(Image|IoSafety|MemoryLimit|Options|Methods|Recipe|AnalysisFile[A-Za-z]*"
     regex="$regex|Laplacian|Steerable|Pyramid|PeriodicComponent|Histogram|Barycenter"
     regex="$regex|Robustness|Plugin|ResultCache|Cli)\\.|^fuzz_"

@@ -378,6 +378,67 @@ TEST_F(Plugin, RecipeFilesOverAMegabyteAreRefusedFromTheirSize)
     EXPECT_FALSE(fs::exists(dir / "x.exr"));
 }
 
+// Recipes that nest recipes are counted before anything runs (issue #34): five files of
+// mixes of 16, a million syntheses, used to run for hours in every host.
+TEST_F(Plugin, NestedRecipesAreBoundedBeforeAnyWork)
+{
+    write("level4.texsyn", R"({ "sample": "s.png", "size": "16x16", "iterations": 1 })");
+    for (int level = 3; level >= 0; --level) {
+        std::string samples;
+        for (int k = 0; k < 16; ++k)
+            samples
+                += std::string(k ? "," : "") + "\"level" + std::to_string(level + 1) + ".texsyn\"";
+        write("level" + std::to_string(level) + ".texsyn",
+            R"({ "method": "mix", "sample": [)" + samples
+                + R"(], "weights": "1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1", "size": "16x16",)"
+                + R"( "iterations": 1 })");
+    }
+    // Depth first: the 65th is the 11th level4 under the first level1, level2 and the
+    // fourth level3.
+    const std::string message = "level4.texsyn: would be synthesis 65 of one recipe, which may "
+                                "run at most 64 with the recipes it nests "
+                                "($TEXSYN_MAX_RECIPE_SYNTHESES raises the limit)";
+    for (const std::string cmd : { std::string("timeout 60 iinfo --stats level0.texsyn"),
+             std::string("timeout 60 oiiotool level0.texsyn -o x.exr"),
+             std::string("timeout 60 maketx level0.texsyn -o x.exr"),
+             "timeout 60 '" + texsyn_exe + "' level0.texsyn -o x.exr" }) {
+        const auto start = std::chrono::steady_clock::now();
+        const ToolRun r = sh(cmd);
+        const double seconds
+            = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_EQ(r.status, 1) << cmd << ": " << r.out;
+        EXPECT_NE(r.out.find(message), std::string::npos) << cmd << ": " << r.out;
+        EXPECT_LT(seconds, 20) << cmd; // refused from the files, not after the work
+    }
+    EXPECT_FALSE(fs::exists(dir / "x.exr"));
+
+    // 1 + 16 + 16 x 16 = 273 syntheses pass a raised limit; 272 does not.
+    ToolRun r = sh("TEXSYN_MAX_RECIPE_SYNTHESES=273 iinfo level2.texsyn");
+    EXPECT_EQ(r.status, 0) << r.out;
+    r = sh("TEXSYN_MAX_RECIPE_SYNTHESES=272 iinfo level2.texsyn");
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_NE(r.out.find("level4.texsyn: would be synthesis 273 of one recipe, which may run at "
+                         "most 272 "),
+        std::string::npos)
+        << r.out;
+    // A mix of 16 runs by default (17 syntheses), and pixels come out.
+    r = sh("oiiotool level3.texsyn -o x.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    for (const char* bad : { "0", "many", "2000000" }) {
+        r = sh(std::string("TEXSYN_MAX_RECIPE_SYNTHESES=") + bad + " iinfo level3.texsyn");
+        EXPECT_EQ(r.status, 1) << r.out;
+        EXPECT_NE(r.out.find(std::string("TEXSYN_MAX_RECIPE_SYNTHESES=") + bad
+                      + ": expected a whole number from 1 to 1000000"),
+            std::string::npos)
+            << r.out;
+    }
+    // The depth limit: a chain of 3 under TEXSYN_MAX_RECIPE_DEPTH=1.
+    r = sh("TEXSYN_MAX_RECIPE_DEPTH=1 iinfo level2.texsyn");
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_NE(r.out.find("level4.texsyn: recipes nest more than 1 deep"), std::string::npos)
+        << r.out;
+}
+
 // One OIIO ImageCache shared by 16 threads, as a renderer uses it: each opens recipes
 // through the plugin, four different ones and each of them by four threads at once, and
 // gets exactly the pixels of the recipe run alone. (The ThreadSanitizer build runs this

@@ -92,6 +92,27 @@ bool apply_recipe_arguments(
 /// it), the arguments are, or the result fails Recipe::validate().
 bool recipe_from_filename(const std::string& name, Recipe& recipe, std::string& error);
 
+/// How deep recipes may nest (a recipe whose sample or input file is a recipe, ...) by
+/// default; $TEXSYN_MAX_RECIPE_DEPTH (1 to 64) overrides it.
+constexpr int kDefaultMaxRecipeDepth = 8;
+
+/// How many syntheses one recipe may trigger by default, itself and every recipe it
+/// nests, each use counted (a mix of 16 recipes each mixing 3 is 1 + 16 + 48 = 65);
+/// $TEXSYN_MAX_RECIPE_SYNTHESES (1 to 1000000) overrides it.
+constexpr int kDefaultMaxRecipeSyntheses = 64;
+
+/// Bounds the work a recipe can ask for before any of it starts: walks the recipes it
+/// nests (samples and input files named *.texsyn, read as recipe_from_filename() reads
+/// them, nothing else: no image is read or hashed), depth first in file order, and fails
+/// (false, `error` naming the nested recipe file where a limit was passed, the limit and
+/// the variable that raises it) if
+/// they nest deeper than the depth limit (a recipe that uses itself) or would run more
+/// syntheses than the synthesis limit, if a nested recipe is bad, or if a limit variable
+/// holds anything but a whole number in its range. The walk stops at the limit: its cost
+/// is bounded by it. run_recipe(), recipe_spec() and the plugin call it for the outermost
+/// recipe.
+bool check_recipe_work(const Recipe& recipe, std::string& error);
+
 /// JSON text of `recipe` with every option of its method written out (but output files);
 /// paths (samples, colorconfig, input files) are made relative to `base_dir`. Throws
 /// std::invalid_argument if a name is not valid UTF-8 (Linux file names may be bytes;

@@ -20,14 +20,13 @@
 #include <texsyn/io.h>
 #include <texsyn/version.h>
 
+#include "recipe_limits_pvt.h"
+
 namespace texsyn::detail {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// As deep as recipes may nest (run_recipe.cpp): a deeper chain is a cycle or fails anyway.
-constexpr int max_key_depth = 8;
 
 // The fingerprint of the bytes of file `path`, read in blocks of 1 MiB (the fingerprints
 // of the blocks, fingerprinted), so that a large file is never held whole.
@@ -69,7 +68,7 @@ bool input_line(const std::string& role, const std::string& path, int depth, std
     std::string& why)
 {
     std::string digest;
-    if (OIIO::Strutil::iends_with(path.substr(0, path.find('?')), ".texsyn")) {
+    if (is_recipe_name(path)) {
         Recipe inner;
         std::string inner_text;
         if (!recipe_from_filename(path, inner, why) || !key_text(inner, depth + 1, inner_text, why))
@@ -86,8 +85,12 @@ bool input_line(const std::string& role, const std::string& path, int depth, std
 // read as an input is part of its reader's).
 bool key_text(const Recipe& recipe, int depth, std::string& text, std::string& why)
 {
-    if (depth > max_key_depth) {
-        why = "recipes nest more than " + std::to_string(max_key_depth) + " deep";
+    // As deep as recipes may nest (recipe_limits.cpp): a deeper chain fails anyway.
+    int max_depth = 0;
+    if (!max_recipe_depth(max_depth, why))
+        return false;
+    if (depth > max_depth) {
+        why = "recipes nest more than " + std::to_string(max_depth) + " deep";
         return false;
     }
     // The recipe with its files named by their file names only: their bytes follow. The

@@ -14,15 +14,16 @@
 #include <texsyn/version.h>
 #include <texsyn/volume.h>
 
+#include "recipe_limits_pvt.h"
+
 namespace texsyn {
 
 namespace {
 
-// A recipe's sample may itself be a recipe (read through the OIIO plugin, on this thread);
-// this bounds the nesting so that a recipe that refers to itself fails instead of
-// recursing until the stack overflows.
+// A recipe's sample may itself be a recipe (read through the OIIO plugin, on this thread).
+// The outermost recipe's nesting is checked before anything runs (check_recipe_work);
+// this count bounds it again as the recipes run, in case a nested file changed since.
 thread_local int recipe_depth = 0;
-constexpr int max_recipe_depth = 8;
 
 struct DepthGuard {
     DepthGuard() { ++recipe_depth; }
@@ -55,12 +56,17 @@ struct Prepared {
 
 bool prepare(const Recipe& recipe, Prepared& p, std::string& error)
 {
-    if (recipe_depth > max_recipe_depth) {
+    int max_depth = 0;
+    if (!detail::max_recipe_depth(max_depth, error))
+        return false;
+    if (recipe_depth > max_depth + 1) {
         error = (recipe.samples.empty() ? std::string("recipe") : recipe.samples[0])
-            + ": recipes nest more than " + std::to_string(max_recipe_depth)
+            + ": recipes nest more than " + std::to_string(max_depth)
             + " deep (does a recipe use itself as its sample?)";
         return false;
     }
+    if (recipe_depth == 1 && !check_recipe_work(recipe, error))
+        return false;
     if (!recipe.validate(error))
         return false;
     p.method = recipe.row();
