@@ -354,6 +354,10 @@ TEST_F(SurfaceMeshTest, BadPlyFilesAreRefusedWithWhatIsWrong)
                   "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
                   "property float z\nend_header\n0 0 0\n"),
         "the PLY header has no face element with a vertex_indices list");
+    EXPECT_EQ(read_error("twice.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement vertex 3\nproperty float y\nend_header\n"),
+        "header line 7: a second element 'vertex'"); // a fuzzing finding: the second had no x
     EXPECT_EQ(
         read_error("text.ply", "solid\n"), "not a PLY file (it does not start with a 'ply' line)");
     const std::string binary("ply\nformat ascii 1.0\n\x7f\x01\0\nend_header\n", 35);

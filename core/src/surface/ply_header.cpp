@@ -112,6 +112,11 @@ bool read_ply_header(std::istream& in, PlyHeader& header, std::string& reason)
                     + ": an element needs a name and a count";
                 return false;
             }
+            if (header.element(element.name)) {
+                reason = "header line " + std::to_string(number) + ": a second element '"
+                    + element.name + "'";
+                return false;
+            }
             element.count = uint64_t(count);
             header.elements.push_back(element);
         } else if (keyword == "property") {
