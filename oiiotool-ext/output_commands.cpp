@@ -42,7 +42,7 @@ void write_image(CliState& state, const StackItem& item, const OIIO::ImageBuf& i
     const std::string& filename)
 {
     const ColorConfig& cc = state.colors();
-    const OIIO::TypeDesc type = output_pixel_type(filename, state.data_format, item.input_format);
+    OIIO::TypeDesc type = output_pixel_type(filename, state.data_format, item.input_format);
     std::string space = item.output_colorspace;
     if (space.empty())
         space = is_linear_type(type) ? cc.scene_linear() : item.input_colorspace;
@@ -55,6 +55,9 @@ void write_image(CliState& state, const StackItem& item, const OIIO::ImageBuf& i
     if (!cc.convert_image(image, cc.scene_linear(), space, stores_associated_alpha(filename), out,
             error, state.threads))
         throw CliError("-o " + filename + " : " + error);
+    // Floating-point files hold every value: half only up to 65504 (a float EXR instead).
+    if (type == OIIO::TypeHalf)
+        type = type_holding(value_range(out, state.threads), type, state.data_format, filename);
     OIIO::ImageSpec& spec = out.specmod();
     std::string sample = std::string(spec.get_string_attribute("synth:sample"));
     if (sample.empty() && !item.file.empty()) // an input written as it is
@@ -130,6 +133,17 @@ void write_material_output(CliState& state, const StackItem& item, const std::st
         if (map.kind == MapKind::Colour) {
             write_image(state, item, map.image, name);
             continue;
+        }
+        // A data map's numbers are what it means: an integer file, which holds 0..1, must
+        // not clip them.
+        const OIIO::TypeDesc type = output_pixel_type(name, state.data_format, item.input_format);
+        if (!type.is_floating_point()) {
+            const ValueRange range = value_range(map.image, state.threads);
+            if (range.low < -1e-5f || range.high > 1.0f + 1e-5f) // beyond rounding
+                throw CliError("-o " + name + " : the " + map.name + " map's values span "
+                    + OIIO::Strutil::fmt::format("{:g}..{:g}", range.low, range.high) + "; a "
+                    + std::string(type.c_str())
+                    + " file holds 0..1: write it as .exr (or .tif with -d float)");
         }
         StackItem data;
         data.input_format = item.input_format;

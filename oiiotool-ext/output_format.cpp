@@ -2,9 +2,11 @@
 #include "output_format.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/strutil.h>
 
 #include "cli_error.h"
@@ -69,6 +71,31 @@ OIIO::TypeDesc output_pixel_type(
             "-d " + std::string(requested.c_str()) + " : ." + ext + " files hold " + names);
     }
     return holds(input_type) ? input_type : types.front();
+}
+
+ValueRange value_range(const OIIO::ImageBuf& image, int nthreads)
+{
+    const auto stats = OIIO::ImageBufAlgo::computePixelStats(image, {}, nthreads);
+    ValueRange range;
+    if (stats.min.empty())
+        return range;
+    range.low = *std::min_element(stats.min.begin(), stats.min.end());
+    range.high = *std::max_element(stats.max.begin(), stats.max.end());
+    return range;
+}
+
+OIIO::TypeDesc type_holding(
+    ValueRange range, OIIO::TypeDesc type, OIIO::TypeDesc requested, const std::string& filename)
+{
+    constexpr float half_max = 65504.0f;
+    const float largest = std::max(std::abs(range.low), std::abs(range.high));
+    if (type != OIIO::TypeHalf || largest <= half_max)
+        return type;
+    if (requested == OIIO::TypeHalf)
+        throw CliError("-o " + filename + " : has values up to "
+            + OIIO::Strutil::fmt::format("{:g}", largest)
+            + ", beyond what half holds (65504): write it with -d float");
+    return OIIO::TypeFloat;
 }
 
 bool is_linear_type(OIIO::TypeDesc type)

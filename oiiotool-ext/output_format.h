@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/typedesc.h>
 
 namespace texsyn::cli {
@@ -17,6 +18,18 @@ namespace texsyn::cli {
 /// if `requested` does not fit a format texsyn knows.
 OIIO::TypeDesc output_pixel_type(
     const std::string& filename, OIIO::TypeDesc requested, OIIO::TypeDesc input_type);
+
+/// The smallest and largest value of any channel of `image` (NaN ignored).
+struct ValueRange {
+    float low = 0.0f, high = 0.0f;
+};
+ValueRange value_range(const OIIO::ImageBuf& image, int nthreads);
+
+/// `type` if it holds values in `range`; float where `type` is half and a value is beyond
+/// half's range (+-65504: it would be written as infinity) unless -d asked for half, in
+/// which case this throws CliError naming the output, its largest value and -d float.
+OIIO::TypeDesc type_holding(
+    ValueRange range, OIIO::TypeDesc type, OIIO::TypeDesc requested, const std::string& filename);
 
 /// Whether pixels of `type` are written scene-linear by default (floating point) rather
 /// than in the input's encoding (integers).

@@ -100,3 +100,59 @@ TEST_F(MaterialCli, WhatCannotBeAMaterialSetIsRefused)
         { "stucco.png", "bricks.png", "bricks_height.png", "bricks_normal.png",
             "small_height.png" });
 }
+
+// Issue #34: a map's values are refused when read if they are not finite, and written in a
+// type that holds them (a roughness map up to 1e5 used to come out as half: infinity).
+TEST_F(MaterialCli, MapValuesAreCheckedWhenReadAndKeptWhenWritten)
+{
+    OIIO::ImageBuf height;
+    height.copy(OIIO::ImageBuf((dir / "bricks_height.png").string()), OIIO::TypeFloat);
+    OIIO::ImageBuf large = OIIO::ImageBufAlgo::mul(height, 100000.0f); // up to 77255
+    ASSERT_TRUE(large.write((dir / "rough.exr").string(), OIIO::TypeFloat));
+    OIIO::ImageBuf nan;
+    nan.copy(height);
+    const float bad[1] = { std::numeric_limits<float>::quiet_NaN() };
+    nan.setpixel(3, 4, bad);
+    ASSERT_TRUE(nan.write((dir / "nan.exr").string(), OIIO::TypeFloat));
+    const std::initializer_list<std::string> inputs = { "stucco.png", "bricks.png",
+        "bricks_height.png", "bricks_normal.png", "rough.exr", "nan.exr" };
+
+    // A NaN is refused when the map is read, naming the map's option, even in a map the
+    // search does not weigh.
+    expect_failure(
+        "bricks.png --material:roughness=nan.exr --patch:size=64x64:flatten=1 -o out_{map}.exr",
+        "texsyn ERROR: --material : roughness=nan.exr : pixel (3, 4) channel Y is NaN; texsyn "
+        "needs finite pixel values",
+        inputs);
+
+    // Values beyond half's range: an EXR written as float, not as infinity.
+    CliRun r = texsyn(
+        "--seed 2 bricks.png --material:roughness=rough.exr --patch:size=64x64:flatten=1 -o "
+        "out_{map}.exr");
+    ASSERT_EQ(r.status, 0) << r.err;
+    OIIO::ImageBuf rough((dir / "out_roughness.exr").string());
+    ASSERT_TRUE(rough.read()) << rough.geterror();
+    EXPECT_EQ(rough.spec().format, OIIO::TypeFloat);
+    const auto stats = OIIO::ImageBufAlgo::computePixelStats(rough);
+    EXPECT_EQ(stats.infcount[0], 0u);
+    EXPECT_GT(stats.max[0], 65504.0f);
+    EXPECT_LE(stats.max[0], 77255.0f);
+    OIIO::ImageBuf albedo((dir / "out_albedo.exr").string());
+    ASSERT_TRUE(albedo.read());
+    EXPECT_EQ(albedo.spec().format, OIIO::TypeHalf); // values that fit keep the default
+    // ... or refused when -d asks for half, and by an integer format, which holds 0..1.
+    fs::remove(dir / "out_albedo.exr");
+    fs::remove(dir / "out_height.exr");
+    fs::remove(dir / "out_roughness.exr");
+    expect_failure_starting("bricks.png --material:roughness=rough.exr "
+                            "--patch:size=64x64:flatten=1 -d half -o half_{map}.exr",
+        "texsyn ERROR: -o half_roughness.exr : has values up to 7", inputs);
+    expect_failure_starting("bricks.png --material:roughness=rough.exr "
+                            "--patch:size=64x64:flatten=1 -o png_{map}.png",
+        "texsyn ERROR: -o png_roughness.png : the roughness map's values span 3", inputs);
+    const CliRun png = texsyn(
+        "bricks.png --material:roughness=rough.exr --patch:size=64x64:flatten=1 -o png_{map}.png");
+    EXPECT_NE(png.err.find("; a uint8 file holds 0..1: write it as .exr (or .tif with -d float)"),
+        std::string::npos)
+        << png.err;
+}

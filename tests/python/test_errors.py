@@ -148,6 +148,15 @@ def test_non_finite_pixels_in_a_file(bad_files):
             f"{path}: pixel (3, 4) channel R is NaN; texsyn needs finite pixel values")
 
 
+def test_non_finite_pixels_in_a_material_map(bad_files):
+    """Issue #34: a map with NaN was carried into the synthesized set (a normal map with
+    1,530 NaN came back); it is refused when read, as a sample is."""
+    albedo = np.full((32, 32, 3), 0.5, np.float32)
+    path = str(bad_files / "nan.exr")
+    refuses(lambda: texsyn.material(albedo, normal=path), ValueError,
+            f"normal={path} : pixel (3, 4) channel R is NaN; texsyn needs finite pixel values")
+
+
 def test_a_constant_image_is_synthesized_as_constant():
     flat = np.full((64, 64, 3), 0.25, np.float32)
     assert (texsyn.pyramid(flat, size=(32, 32), iterations=1) == 0.25).all()

@@ -80,6 +80,11 @@ struct PlanarImage {
 /// the first offending pixel and channel).
 bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::string& error);
 
+/// False, with "pixel (X, Y) channel C is NaN; texsyn needs finite pixel values" (or
+/// "infinite") for the first such pixel in scanline order, if any pixel of `src` is not
+/// finite.
+bool check_finite_pixels(const OIIO::ImageBuf& src, std::string& error);
+
 /// Writes `src` into `dst` as a new float ImageBuf of the same size and channels, with
 /// origin (0,0). With `associate` (OIIO's in-memory convention, and what OpenEXR stores)
 /// colour channels are multiplied by alpha; otherwise they are left un-associated and the

@@ -39,6 +39,32 @@ float Plane::at(int x, int y, Boundary b) const
     return (*this)(wrap_coordinate(x, m_width, b), wrap_coordinate(y, m_height, b));
 }
 
+namespace {
+
+// "pixel (X, Y) channel C is NaN; texsyn needs finite pixel values"
+std::string non_finite_pixel(int x, int y, const std::string& channel, float value)
+{
+    return "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " + channel
+        + " is " + (std::isnan(value) ? "NaN" : "infinite") + "; texsyn needs finite pixel values";
+}
+
+} // namespace
+
+bool check_finite_pixels(const OIIO::ImageBuf& src, std::string& error)
+{
+    const OIIO::ImageSpec& spec = src.spec();
+    for (OIIO::ImageBuf::ConstIterator<float> p(src); !p.done(); ++p)
+        for (int c = 0; c < spec.nchannels; ++c)
+            if (!std::isfinite(p[c])) {
+                error = non_finite_pixel(p.x(), p.y(),
+                    c < int(spec.channelnames.size()) ? spec.channelnames[c]
+                                                      : "c" + std::to_string(c),
+                    p[c]);
+                return false;
+            }
+    return true;
+}
+
 bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::string& error)
 {
     if (src.has_error()) {
@@ -85,10 +111,7 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
         for (int x = 0; x < w; ++x, p += nc) {
             for (int c = 0; c < nc; ++c) {
                 if (!std::isfinite(p[c])) {
-                    error = "pixel (" + std::to_string(x + spec.x) + ", "
-                        + std::to_string(y + spec.y) + ") channel " + out.channel_names[c] + " is "
-                        + (std::isnan(p[c]) ? "NaN" : "infinite")
-                        + "; texsyn needs finite pixel values";
+                    error = non_finite_pixel(x + spec.x, y + spec.y, out.channel_names[c], p[c]);
                     return false;
                 }
                 rows[size_t(c)][x] = p[c];

@@ -143,6 +143,13 @@ bool run_material(const MethodOptions& options, const std::vector<MethodInput>& 
                 return false;
             }
         }
+        // Refused as a sample is: a map the search does not weigh would carry its NaN into
+        // every copy of it, and into the files written.
+        if (std::string why; !check_finite_pixels(map.image, why)) {
+            error = which == MapName::Albedo ? inputs[0].name + ": " + why
+                                             : option_error(name, *opt.file_of(which), why);
+            return false;
+        }
         material->maps.push_back(std::move(map));
     }
     OIIO::ImageBuf search;
