@@ -20,6 +20,8 @@ find_package(Eigen3 3.3 CONFIG REQUIRED)
 # libtiff: decodes every strip of JPEG-compressed TIFF inputs (src/image/tiff_extent.cpp).
 find_package(TIFF 4.5 REQUIRED)
 find_package(nlohmann_json 3 CONFIG REQUIRED)
+# HMAC-SHA256 authenticates entries of a shared result cache ($TEXSYN_CACHE_SECRET).
+find_package(OpenSSL 3 REQUIRED COMPONENTS Crypto)
 # Header-only (the kd-tree search back-end); Debian's config is in /usr/share/nanoflann/cmake.
 find_package(nanoflann CONFIG REQUIRED)
 # Debian ships only the shared float build; without SHARED the config looks for static targets.

@@ -12,9 +12,10 @@ packages=(
   libkissfft-dev                            # default (permissive) FFT backend
   libfftw3-dev                              # optional GPL backend (-DTEXSYN_WITH_FFTW=ON)
   libeigen3-dev nlohmann-json3-dev
+  libssl-dev                                # HMAC-SHA256 for a shared result cache's entries (TEXSYN_CACHE_SECRET)
   libtiff-dev                               # checks that JPEG-compressed TIFF inputs decode whole
   libnanoflann-dev                          # kd-tree search (--neighborhood:search=kdtree)
-  libopenmesh-dev                           # surface meshes: OBJ/PLY reading, remeshing (BSD-3)
+  libopenmesh-dev                           # surface meshes: remeshing (BSD-3)
   libcgal-dev                               # optional GPL remeshing backend (-DTEXSYN_WITH_CGAL=ON)
   libopenvdb-dev libboost-iostreams-dev      # solid textures: .vdb output (OpenVDB's CMake module needs Boost.Iostreams)
   python3-openimageio                       # tests open recipes from Python

@@ -16,6 +16,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -350,4 +351,131 @@ TEST_F(ResultCache, AnUnusableFolderStillRenders)
         << r.out;
     EXPECT_EQ(count(r.out, "texsyn cache: hit"), 1u) << r.out;
     EXPECT_EQ(entries().size(), 1u);
+}
+
+// Issue #34: the checksum finds damage, not forgery. An entry of seed 8 renamed to seed 7's
+// key with its key attribute rewritten is served without a site secret (anyone who can
+// write the folder can do this: docs/cache.md); with $TEXSYN_CACHE_SECRET it is ignored,
+// and so is an authenticated entry whose key was rewritten.
+TEST_F(ResultCache, ForgedEntriesAreServedOnlyWithoutASecret)
+{
+    write("r8.texsyn", R"({ "sample": "s.png", "size": "48x40", "iterations": 1, "seed": 8 })");
+    std::ofstream(dir / "secret") << "0123456789abcdef-a-site-secret";
+    // forge(SECRET): seed 7's entry replaced by seed 8's, its key rewritten.
+    auto forge = [&](const std::string& env) {
+        fs::remove_all(dir / "cache");
+        EXPECT_EQ(sh(env + " oiiotool r.texsyn -o a.exr").status, 0);
+        const std::string key7 = entries()[0].substr(0, 32);
+        fs::remove(dir / "cache" / entries()[0]);
+        EXPECT_EQ(sh(env + " oiiotool r8.texsyn -o b.exr").status, 0);
+        const std::string key8 = entries()[0].substr(0, 32);
+        const ToolRun r = sh("oiiotool -a cache/" + key8 + ".exr --attrib synth:cache_key " + key7
+                + " -d float -o cache/" + key7 + ".exr && rm cache/" + key8 + ".exr",
+            "");
+        EXPECT_EQ(r.status, 0) << r.out;
+    };
+    const std::string reference = plain("r.texsyn"); // seed 3
+    const std::string forged = plain("r8.texsyn");
+    forge("");
+    ToolRun r = sh("oiiotool r.texsyn -d float -o c.exr && idiff -fail 0 " + forged + ".exr c.exr");
+    EXPECT_EQ(r.status, 0) << "without a secret the forgery is served: " << r.out;
+    EXPECT_EQ(count(r.out, "texsyn cache: hit"), 1u) << r.out;
+
+    const std::string secret = "TEXSYN_CACHE_SECRET=secret";
+    forge(secret); // authenticated entries, one key rewritten
+    r = sh(secret + " oiiotool r.texsyn -d float -o d.exr && idiff -fail 0 " + reference
+        + ".exr d.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(count(r.out,
+                  ": ignoring an untrusted entry (it is not authenticated with "
+                  "$TEXSYN_CACHE_SECRET (written without it, or forged)); it is made "
+                  "again"),
+        1u)
+        << r.out;
+    EXPECT_EQ(count(r.out, ", synthesizing"), 1u) << r.out;
+    r = sh(secret + " oiiotool r.texsyn -d float -o e.exr && idiff -fail 0 " + reference
+        + ".exr e.exr");
+    EXPECT_EQ(count(r.out, "texsyn cache: hit"), 1u)
+        << "replaced by an authenticated one: " << r.out;
+    // An entry stored without the secret is not trusted by a process that has it.
+    fs::remove_all(dir / "cache");
+    ASSERT_EQ(sh("oiiotool r.texsyn -o f.exr").status, 0);
+    r = sh(secret + " oiiotool r.texsyn -o g.exr");
+    EXPECT_EQ(count(r.out, "ignoring an untrusted entry"), 1u) << r.out;
+    // A secret that is too short turns the cache off, with one warning.
+    std::ofstream(dir / "short") << "123";
+    r = sh("TEXSYN_CACHE_SECRET=short oiiotool r.texsyn -d float -o h.exr && idiff -fail 0 "
+        + reference + ".exr h.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(
+        r.out.find("TEXSYN_CACHE: short: a cache secret is 16 to 4096 bytes"), std::string::npos)
+        << r.out;
+}
+
+// A process holding an entry's lock that is stopped (SIGSTOP) delays the others by the
+// lock timeout, not for ever.
+TEST_F(ResultCache, AStoppedLockHolderDelaysOthersByTheTimeoutOnly)
+{
+    expect_uncached_result("r.texsyn", 1);
+    const std::string key = entries()[0].substr(0, 32);
+    fs::remove(dir / "cache" / entries()[0]);
+    ASSERT_EQ(sh("(flock cache/" + key
+                      + ".lock sleep 300 & echo $! > holder.pid) && sleep 0.5 "
+                        "&& kill -STOP $(cat holder.pid)",
+                  "")
+                  .status,
+        0);
+    const auto start = std::chrono::steady_clock::now();
+    const ToolRun r = sh("TEXSYN_CACHE_LOCK_TIMEOUT=2 oiiotool r.texsyn -d float -o a.exr && "
+                         "idiff -fail 0 plain0.exr a.exr");
+    const double seconds
+        = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    sh("kill -KILL $(cat holder.pid); pkill -KILL -f 'sleep 300'", "");
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find(key
+                  + ".lock: still held by another process after 2 s "
+                    "($TEXSYN_CACHE_LOCK_TIMEOUT): synthesizing without waiting more"),
+        std::string::npos)
+        << r.out;
+    EXPECT_GE(seconds, 2.0);
+    EXPECT_LT(seconds, 30.0);
+    EXPECT_EQ(count(r.out, "texsyn cache: stored " + key), 1u) << r.out;
+}
+
+// In a folder anyone may write, entries and locks of other users are not used (root can
+// make a file of another user: the test needs it).
+TEST_F(ResultCache, AWorldWritableFolderTrustsOnlyItsOwnerAndThisUser)
+{
+    if (::geteuid() != 0)
+        GTEST_SKIP() << "making a file of another user needs root";
+    expect_uncached_result("r.texsyn", 1);
+    const fs::path entry = dir / "cache" / entries()[0];
+    const std::string key = entries()[0].substr(0, 32);
+    ASSERT_EQ(::chown(entry.c_str(), 4321, 4321), 0);
+    ASSERT_EQ(::chmod((dir / "cache").c_str(), 01777), 0);
+    ToolRun r = sh("oiiotool r.texsyn -d float -o a.exr && idiff -fail 0 plain0.exr a.exr");
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(count(r.out,
+                  "ignoring an untrusted entry (it belongs to user 4321, and anyone may "
+                  "write the folder"),
+        1u)
+        << r.out;
+    EXPECT_EQ(count(r.out, ", synthesizing"), 1u) << r.out;
+    // The folder owner's entry is used; a lock of another user is not.
+    fs::remove(entry);
+    ASSERT_EQ(::chown((dir / "cache" / (key + ".lock")).c_str(), 4321, 4321), 0);
+    r = sh("oiiotool r.texsyn -o b.exr");
+    EXPECT_NE(r.out.find(key
+                  + ".lock: not used (it belongs to user 4321, and anyone may write "
+                    "the folder)"),
+        std::string::npos)
+        << r.out;
+    EXPECT_EQ(entries().size(), 1u);
+    r = sh("oiiotool r.texsyn -o c.exr");
+    EXPECT_EQ(count(r.out, "texsyn cache: hit"), 1u) << r.out;
+    // Without o+w, the folder's writers are its owner and group: every entry is used.
+    ASSERT_EQ(::chown((dir / "cache" / entries()[0]).c_str(), 4321, 4321), 0);
+    ASSERT_EQ(::chmod((dir / "cache").c_str(), 02775), 0);
+    r = sh("oiiotool r.texsyn -o d.exr");
+    EXPECT_EQ(count(r.out, "texsyn cache: hit"), 1u) << r.out;
 }
