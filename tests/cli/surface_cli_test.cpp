@@ -167,6 +167,11 @@ TEST_F(SurfaceCli, BadSettingsAreRefusedBeforeTheWork)
         "texsyn ERROR: --choosy-surface : remesh=3 : expected 0 (no remesh), 8 and more faces, "
         "or auto",
         in);
+    expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:remesh=8 -o out.ply",
+        "texsyn ERROR: --choosy-surface : remesh=8 : too few faces for this shape: the remeshed "
+        "surface is a closed surface whose faces face inwards (negative enclosed volume); faces "
+        "must be counter-clockwise seen from outside; ask for more faces",
+        in);
     expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:isotropic=1 -o out.ply",
         "texsyn ERROR: --choosy-surface : isotropic=1 : unknown option (known: mesh, levels, "
         "iterations, penalty, search, dims, eps, remesh, bake, boundary)",
