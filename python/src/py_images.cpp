@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "py_images.h"
 
+#include <algorithm>
 #include <memory>
 #include <vector>
+
+#include <texsyn/memory.h>
 
 #include "py_errors.h"
 
@@ -41,12 +44,25 @@ void name_channels(OIIO::ImageSpec& spec)
     spec.alpha_channel = n == 2 ? 1 : n >= 4 ? 3 : -1;
 }
 
+// Refuses (ValueError, as the methods' own estimates) a copy of `bytes` of the caller's
+// pixels that the memory limit does not allow: a zero-stride view (np.broadcast_to) of
+// 40000 x 40000 pixels takes no memory until it is copied.
+void check_copy(double bytes, const std::string& what)
+{
+    std::string error;
+    if (!check_memory(size_t(std::min(bytes, 1e18)), what + ": a copy of its pixels", error))
+        raise_error(ErrorKind::Value, error);
+}
+
 ImageArg array_arg(py::handle obj, const std::string& what)
 {
     py::array given = py::reinterpret_borrow<py::array>(obj);
+    const double elements = double(given.size());
     // An array in the other byte order ('>f4', '>u2' here) is read in this one: one copy.
-    if (!given.dtype().attr("isnative").cast<bool>())
+    if (!given.dtype().attr("isnative").cast<bool>()) {
+        check_copy(elements * double(given.itemsize()), what);
         given = given.attr("astype")(given.dtype().attr("newbyteorder")("=")).cast<py::array>();
+    }
     const py::dtype dt = given.dtype();
     const char kind = dt.kind();
     OIIO::TypeDesc type;
@@ -63,7 +79,10 @@ ImageArg array_arg(py::handle obj, const std::string& what)
         raise_error(ErrorKind::Value,
             what + ": numpy arrays of uint8, uint16 or floating point are taken, got "
                 + py::str(py::handle(dt)).cast<std::string>());
-    if (kind == 'f' && dt.itemsize() > 4) // float64: the library works in float32
+    const bool float64 = kind == 'f' && dt.itemsize() > 4; // the library works in float32
+    if (float64 || !given.attr("flags").attr("c_contiguous").cast<bool>())
+        check_copy(elements * (float64 ? 4.0 : double(dt.itemsize())), what);
+    if (float64)
         a = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(given);
     else
         a = py::array::ensure(given, py::array::c_style);
@@ -115,6 +134,7 @@ ImageArg imagebuf_arg(py::handle obj, const std::string& what)
     // Cached, windowed or strided pixels: one copy, starting at 0, 0.
     OIIO::ImageSpec local = spec;
     local.x = local.y = local.z = 0;
+    check_copy(double(spec.image_bytes()), what);
     arg.pixels.reset(local);
     if (!buf.get_pixels(buf.roi(), spec.format, arg.pixels.localpixels()))
         raise_error(ErrorKind::File, what + ": " + buf.geterror());

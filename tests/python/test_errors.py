@@ -187,6 +187,19 @@ def test_absurd_sizes_are_refused_before_allocating(stucco, call, message):
     refuses(lambda: call(stucco), ValueError, message)
 
 
+def test_copies_of_views_are_checked_against_the_memory_limit(monkeypatch):
+    """Issue #34: a zero-stride view of 40000 x 40000 pixels takes no memory until it is
+    copied; the copy went past 4 GB under TEXSYN_MAX_MEMORY=2G."""
+    monkeypatch.setenv("TEXSYN_MAX_MEMORY", "2G")
+    view = np.broadcast_to(np.float32(0.5), (40000, 40000, 3))
+    refuses(lambda: texsyn.pyramid(view), ValueError,
+            "sample: a copy of its pixels would need about 17.9 GB of memory")
+    big_endian = np.broadcast_to(np.array(0.5, ">f4"), (40000, 40000, 3))
+    refuses(lambda: texsyn.pyramid(big_endian), ValueError, "a copy of its pixels would need")
+    as_float64 = np.broadcast_to(np.float64(0.5), (40000, 40000, 3))
+    refuses(lambda: texsyn.pyramid(as_float64), ValueError, "a copy of its pixels would need")
+
+
 def test_bad_files_are_os_errors(bad_files):
     for name, message in [("missing.png", "no such file"),
                           ("notes.png", "cannot read image (Not a PNG file)"),

@@ -399,6 +399,31 @@ TEST(UvBake, TwoUdimTilesHoldTheirOwnIslands)
     }
 }
 
+// Issue #34: UVs reaching exactly 1.0 counted as four UDIM tiles in the memory estimate
+// (an 8192x8192 bake estimated at 4.5 GB instead of 1.1 GB). A tile is counted where a UV
+// triangle overlaps it with positive length, as the bake makes them.
+TEST(UvBake, TilesAreThoseTheTrianglesOverlap)
+{
+    SurfaceMesh square = two_tile_strip();
+    for (Imath::V2f& uv : square.uvs) // the first island fills its tile: 0..1 exactly
+        if (uv.x < 1.0f)
+            uv = Imath::V2f(uv.x < 0.5f ? 0.0f : 1.0f, uv.y < 0.5f ? 0.0f : 1.0f);
+    auto udims = [](const SurfaceMesh& m) {
+        std::vector<int> out;
+        for (const auto& tile : bake_tiles(m))
+            out.push_back(tile.first);
+        return out;
+    };
+    EXPECT_EQ(udims(square), (std::vector<int> { 1001, 1002 }));
+    square.face_uvs.resize(2); // the first island alone
+    square.faces.resize(2);
+    EXPECT_EQ(udims(square), (std::vector<int> { 1001 }));
+    for (Imath::V2f& uv : square.uvs) // moved up one row, to 1..2 exactly
+        uv.y += 1.0f;
+    EXPECT_EQ(udims(square), (std::vector<int> { 1011 }));
+    EXPECT_EQ(udims(bundled("torus_uv.obj")), (std::vector<int> { 1001 }));
+}
+
 TEST(UvBake, BadInputsAreRefusedWithOneLine)
 {
     const SurfaceMesh strip = two_tile_strip();

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <set>
 
 #include "face_stencil_pvt.h"
 #include "methods/method_helpers_pvt.h"
@@ -142,38 +141,31 @@ bool grow(SurfaceTexture& out, const OIIO::ImageBuf& sample, const SurfaceOption
     if (!check_memory(surface_memory_estimate(finest, in.width(), in.height(), in.nchannels(), opt),
             what, error))
         return false;
-    // The bake's size is checked before the synthesis: the UDIM tiles the UVs' bounding
-    // boxes touch (at least those the bake makes).
+    // The bake's size is checked before the synthesis, for the UDIM tiles it will make.
     const bool bake = !mesh.uvs.empty() && options.bake_width && options.bake_height;
     if (bake) {
         const std::string size
             = std::to_string(options.bake_width) + "x" + std::to_string(options.bake_height);
-        std::set<int> tiles;
-        for (const auto& corners : mesh.face_uvs) {
-            Imath::V2f lo = mesh.uvs[corners[0]], hi = lo;
-            for (uint32_t i : corners) {
-                lo.x = std::min(lo.x, mesh.uvs[i].x), lo.y = std::min(lo.y, mesh.uvs[i].y);
-                hi.x = std::max(hi.x, mesh.uvs[i].x), hi.y = std::max(hi.y, mesh.uvs[i].y);
-            }
-            if (!(lo.x >= 0.0f && hi.x <= 10.0f && lo.y >= 0.0f && hi.y <= 100.0f)) {
+        for (const Imath::V2f& uv : mesh.uvs)
+            if (!(uv.x >= 0.0f && uv.x <= 10.0f && uv.y >= 0.0f && uv.y <= 100.0f)) {
                 error = mesh_error(
                     options.mesh, "has UVs outside u 0..10, v 0..100 (the UDIM tiles 1001..1999)");
                 return false;
             }
-            for (int v = int(lo.y); v <= std::min(int(hi.y), 99); ++v)
-                for (int u = int(lo.x); u <= std::min(int(hi.x), 9); ++u)
-                    tiles.insert(1001 + u + 10 * v);
-        }
+        const size_t tiles = detail::bake_tiles(mesh).size();
         const double values = double(options.bake_width) * double(options.bake_height)
-            * double(in.nchannels()) * double(tiles.size());
+            * double(in.nchannels()) * double(tiles);
         if (values > double(detail::kMaxBakeValues)) {
             error = option_error("bake", size,
-                "too large: " + std::to_string(tiles.size()) + " UDIM tiles of "
+                "too large: " + std::to_string(tiles) + " UDIM tiles of "
                     + std::to_string(in.nchannels()) + " channels would hold over "
                     + std::to_string(detail::kMaxBakeValues) + " values");
             return false;
         }
-        if (!check_memory(size_t(values * 4.0 * 1.5), "bake=" + size, error))
+        if (!check_memory(size_t(values * detail::kBakeBytesPerValue),
+                "bake=" + size + " (" + std::to_string(tiles) + " UDIM tile"
+                    + (tiles == 1 ? "" : "s") + ")",
+                error))
             return false;
     }
 

@@ -433,6 +433,24 @@ FaceValues vertex_colours(const FaceLevel& level, const FaceValues& values, int 
     return out;
 }
 
+std::map<int, std::vector<uint32_t>> bake_tiles(const SurfaceMesh& uv_mesh)
+{
+    std::map<int, std::vector<uint32_t>> tile_faces; // by UDIM
+    for (size_t f = 0; f < uv_mesh.face_uvs.size(); ++f) {
+        const std::array<V2d, 3> t = face_uv(uv_mesh, f);
+        if (!bakeable(t))
+            continue;
+        const auto [u0, u1] = tile_range(
+            std::min({ t[0].x, t[1].x, t[2].x }), std::max({ t[0].x, t[1].x, t[2].x }), 9);
+        const auto [v0, v1] = tile_range(
+            std::min({ t[0].y, t[1].y, t[2].y }), std::max({ t[0].y, t[1].y, t[2].y }), 99);
+        for (int v = v0; v <= v1; ++v)
+            for (int u = u0; u <= u1; ++u)
+                tile_faces[1001 + u + 10 * v].push_back(uint32_t(f));
+    }
+    return tile_faces;
+}
+
 bool bake_uv_texture(const SurfaceMesh& uv_mesh, const FacePyramid& pyramid,
     const FaceValues& colours, const UvBakeOptions& opt, UvBake& out, std::string& error)
 {
@@ -441,19 +459,7 @@ bool bake_uv_texture(const SurfaceMesh& uv_mesh, const FacePyramid& pyramid,
         return false;
     try {
         // The tiles first, so that the size is checked before texels are allocated.
-        std::map<int, std::vector<uint32_t>> tile_faces; // by UDIM
-        for (size_t f = 0; f < uv_mesh.faces.size(); ++f) {
-            const std::array<V2d, 3> t = face_uv(uv_mesh, f);
-            if (!bakeable(t))
-                continue;
-            const auto [u0, u1] = tile_range(
-                std::min({ t[0].x, t[1].x, t[2].x }), std::max({ t[0].x, t[1].x, t[2].x }), 9);
-            const auto [v0, v1] = tile_range(
-                std::min({ t[0].y, t[1].y, t[2].y }), std::max({ t[0].y, t[1].y, t[2].y }), 99);
-            for (int v = v0; v <= v1; ++v)
-                for (int u = u0; u <= u1; ++u)
-                    tile_faces[1001 + u + 10 * v].push_back(uint32_t(f));
-        }
+        const std::map<int, std::vector<uint32_t>> tile_faces = bake_tiles(uv_mesh);
         const size_t per_tile = size_t(opt.width) * size_t(opt.height);
         if (tile_faces.empty()
             || per_tile

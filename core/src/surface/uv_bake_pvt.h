@@ -17,6 +17,9 @@
 
 #include <OpenImageIO/Imath.h>
 
+#include <map>
+#include <vector>
+
 #include <texsyn/image.h>
 
 #include "face_filter_pvt.h"
@@ -29,6 +32,16 @@ namespace texsyn::detail {
 constexpr size_t kMaxBakeValues = size_t(1) << 30;
 /// Largest side of a tile, in texels.
 constexpr int kMaxBakeSide = 65536;
+/// Peak memory of a bake written by the tool, per texel value (texels x tiles x channels):
+/// the baked tiles, a tile's working memory, the output's colour conversion and encoding.
+/// Measured: 12.5 bytes on torus_uv.obj, bake=2048x2048 to 4096x4096, RGB, as EXR.
+constexpr double kBakeBytesPerValue = 13.0;
+
+/// The UDIM tiles (1001 + u + 10 v) a bake of `uv_mesh` (UVs in u 0..10, v 0..100) makes,
+/// each with the faces whose UV triangles overlap it with positive length: a UV range
+/// [lo, hi] spans tiles floor(lo) .. ceil(hi) - 1, so a face reaching u = 1.0 exactly is
+/// in tile 1001 only. Faces of zero UV area are in none.
+std::map<int, std::vector<uint32_t>> bake_tiles(const SurfaceMesh& uv_mesh);
 
 struct UvBakeOptions {
     int width = 1024, height = 1024; ///< texels of every tile
