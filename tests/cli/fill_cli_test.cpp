@@ -29,6 +29,9 @@ TEST_F(FillCli, KeepsTheUnmaskedPixelsOfAFloatPlate)
     CliRun r = texsyn("--seed 4 -v plate.exr --fill:mask=hole.png -o filled.exr");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("filled 4463 px in 1 hole"), std::string::npos) << r.err;
+    // -v names the schedule that ran where the options say iterations=auto.
+    EXPECT_NE(r.err.find("iterations=auto"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" levels, iterations 4,6,"), std::string::npos) << r.err;
     OIIO::ImageBuf plate((dir / "plate.exr").string()), filled((dir / "filled.exr").string()),
         mask((dir / "hole.png").string());
     ASSERT_TRUE(filled.read()) << filled.geterror();

@@ -53,12 +53,17 @@ struct FillWithFiles {
     }
 };
 
-// "filled 65536 px in 1 hole; 4 levels; worked on 614656 px".
-std::string report_text(const FillReport& r)
+// "filled 65536 px in 1 hole; 4 levels, iterations 4,6,8,8 (finest first); worked on
+// 614656 px": the schedule that ran, where the options say "auto".
+std::string report_text(const FillReport& r, const FillOptions& opt)
 {
-    char text[160];
-    std::snprintf(text, sizeof(text), "filled %zu px in %d hole%s; %d levels; worked on %zu px",
-        r.filled, r.holes, r.holes == 1 ? "" : "s", r.levels, r.work_pixels);
+    std::string iterations;
+    for (int l = 0; l < r.levels; ++l)
+        iterations += (l ? "," : "") + std::to_string(opt.iterations_at(l));
+    char text[200];
+    std::snprintf(text, sizeof(text),
+        "filled %zu px in %d hole%s; %d levels, iterations %s (finest first); worked on %zu px",
+        r.filled, r.holes, r.holes == 1 ? "" : "s", r.levels, iterations.c_str(), r.work_pixels);
     return text;
 }
 
@@ -89,7 +94,7 @@ bool run_fill(const MethodOptions& options, const std::vector<MethodInput>& inpu
     }
     if (want_map)
         result.files.emplace_back("map", std::move(map));
-    result.notes = report_text(report);
+    result.notes = report_text(report, opt);
     return true;
 }
 
