@@ -12,6 +12,7 @@
 #include <OpenImageIO/strutil.h>
 
 #include <texsyn/error_text.h>
+#include <texsyn/inputs.h>
 #include <texsyn/io.h>
 #include <texsyn/material.h>
 #include <texsyn/memory.h>
@@ -259,12 +260,9 @@ MethodOptions command_options(const std::string& name, const Method& m,
         const std::string file = options.value(f.name);
         if (file.empty())
             continue;
-        std::error_code ec;
         if (f.type == OptionType::InputFile) {
-            if (!std::filesystem::is_regular_file(file, ec))
-                throw CliError(name + " : "
-                    + option_error(f.name, file,
-                        std::filesystem::exists(file, ec) ? "not a regular file" : "no such file"));
+            if (std::string why; !check_option_file(f, file, why))
+                throw CliError(name + " : " + why);
             inputs.push_back(file);
         } else if (f.type == OptionType::OutputFile) {
             side_outputs.emplace_back(f.name, file);

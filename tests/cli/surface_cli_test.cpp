@@ -159,6 +159,15 @@ TEST_F(SurfaceCli, BadSettingsAreRefusedBeforeTheWork)
         "texsyn ERROR: --choosy-surface : mesh= : a mesh file is needed (OBJ or PLY)", in);
     expect_failure("flowers.png --choosy-surface:mesh=none.obj -o out.ply",
         "texsyn ERROR: --choosy-surface : mesh=none.obj : no such file", in);
+    fs::create_symlink("loop2.obj", dir / "loop1.obj");
+    fs::create_symlink("loop1.obj", dir / "loop2.obj");
+    expect_failure("flowers.png --choosy-surface:mesh=loop1.obj -o out.ply",
+        "texsyn ERROR: --choosy-surface : mesh=loop1.obj : is a loop of symbolic links",
+        { "bricks.png", "flowers.png", "sphere.obj", "stucco.png", "loop1.obj", "loop2.obj" });
+    fs::remove(dir / "loop1.obj");
+    fs::remove(dir / "loop2.obj");
+    expect_failure("flowers.png --choosy-surface:mesh=. -o out.ply",
+        "texsyn ERROR: --choosy-surface : mesh=. : is a directory, not a mesh", in);
     expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:levels=8 -o out.ply",
         "texsyn ERROR: --choosy-surface : levels=8 is too many for the sample (128x128): it "
         "needs about 7 x 2^(levels-1) = 896 pixels a side",

@@ -70,6 +70,11 @@ bool sample_from_image(OIIO::ImageBuf pixels, const std::string& name, const Col
 bool relinearize_sample(Sample& sample, const ColorConfig& colors, const std::string& colorspace,
     std::string& error, int nthreads = 0);
 
+/// Whether input-file option `field` may read `file`: a regular file (a mesh for ReadMesh
+/// options, else an image). False with "<option>=<file> : <reason>": no such file, a loop
+/// of symbolic links, a directory, or not a regular file (a FIFO, device or socket).
+bool check_option_file(const OptionField& field, const std::string& file, std::string& error);
+
 /// Reads the file of every input-file option of `options` that names one: ReadImage files
 /// like a sample (scene-linear, the space guessed from the file), ReadData files as their
 /// numbers; a ReadMesh file only has to exist (its method reads it). Fails (false,

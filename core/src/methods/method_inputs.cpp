@@ -123,6 +123,14 @@ bool relinearize_sample(Sample& sample, const ColorConfig& colors, const std::st
     return true;
 }
 
+bool check_option_file(const OptionField& field, const std::string& file, std::string& error)
+{
+    if (check_regular_file(file, field.file == FileUse::ReadMesh ? "a mesh" : "an image", error))
+        return true;
+    error = option_error(field.name, file, error.substr(file.size() + 2)); // after "FILE: "
+    return false;
+}
+
 bool read_option_files(const MethodOptions& options, const ColorConfig& colors, OptionImages& files,
     std::string& error, int nthreads)
 {
@@ -130,12 +138,8 @@ bool read_option_files(const MethodOptions& options, const ColorConfig& colors, 
         const std::string file = options.value(f.name);
         if (f.type != OptionType::InputFile || file.empty())
             continue;
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(file, ec)) {
-            error = option_error(f.name, file,
-                std::filesystem::exists(file, ec) ? "not a regular file" : "no such file");
+        if (!check_option_file(f, file, error))
             return false;
-        }
         OIIO::ImageBuf image;
         std::string why;
         // read_image's messages start with the file's name, which the option already gives.

@@ -155,13 +155,9 @@ bool recipe_spec(const Recipe& recipe, OIIO::ImageSpec& spec, std::string& error
         inputs.push_back(in);
     }
     for (const OptionField& f : options.table().fields())
-        if (const std::string file = options.value(f.name); f.type == OptionType::InputFile
-            && !file.empty()
-            && !check_regular_file(
-                file, f.file == FileUse::ReadMesh ? "a mesh" : "an image", error)) {
-            error = option_error(f.name, file, error.substr(file.size() + 2));
+        if (const std::string file = options.value(f.name);
+            f.type == OptionType::InputFile && !file.empty() && !check_option_file(f, file, error))
             return false;
-        }
     ResultLayout layout;
     if (!result_layout(method, options, inputs, layout, error))
         return false;
