@@ -230,30 +230,41 @@ void add_guidance(std::vector<Plane>& planes, int ncolour, const std::vector<uin
     planes.push_back(std::move(g));
 }
 
-int hole_thickness(const std::vector<uint8_t>& hole, int width, const PixelBox& box)
+std::vector<int> chessboard_distance(
+    const std::vector<uint8_t>& inside, int width, const PixelBox& box, bool edge_is_outside)
 {
     // Two-pass chessboard distance transform over the box (Rosenfeld & Pfaltz).
+    constexpr int far = 1 << 29;
     const int w = box.width(), h = box.height();
     std::vector<int> d(size_t(w) * size_t(h));
     auto at = [&](int x, int y) -> int {
-        return x < 0 || y < 0 || x >= w || y >= h ? 0 : d[size_t(y) * size_t(w) + size_t(x)];
+        if (x < 0 || y < 0 || x >= w || y >= h)
+            return edge_is_outside ? 0 : far;
+        return d[size_t(y) * size_t(w) + size_t(x)];
     };
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             int& v = d[size_t(y) * size_t(w) + size_t(x)];
-            v = hole[size_t(box.y0 + y) * size_t(width) + size_t(box.x0 + x)]
-                ? 1 + std::min({ at(x - 1, y), at(x - 1, y - 1), at(x, y - 1), at(x + 1, y - 1) })
-                : 0;
+            v = inside[size_t(box.y0 + y) * size_t(width) + size_t(box.x0 + x)] ? std::min(far,
+                    1
+                        + std::min(
+                            { at(x - 1, y), at(x - 1, y - 1), at(x, y - 1), at(x + 1, y - 1) }))
+                                                                                : 0;
         }
-    int largest = 0;
     for (int y = h - 1; y >= 0; --y)
         for (int x = w - 1; x >= 0; --x) {
             int& v = d[size_t(y) * size_t(w) + size_t(x)];
             if (v > 0)
                 v = std::min({ v, 1 + at(x + 1, y), 1 + at(x + 1, y + 1), 1 + at(x, y + 1),
                     1 + at(x - 1, y + 1) });
-            largest = std::max(largest, v);
         }
+    return d;
+}
+
+int hole_thickness(const std::vector<uint8_t>& hole, int width, const PixelBox& box)
+{
+    const std::vector<int> d = chessboard_distance(hole, width, box, true);
+    const int largest = d.empty() ? 0 : *std::max_element(d.begin(), d.end());
     return std::max(1, 2 * largest - 1);
 }
 

@@ -92,38 +92,6 @@ std::vector<Plane> seam_offsets(const RegionCopies& copies, const std::vector<ui
     return offsets;
 }
 
-// Per crop pixel, its chessboard distance (1, 2, …) to the nearest pixel outside the hole,
-// up to `limit` (further pixels get limit); 0 outside the hole.
-std::vector<int> distance_inside(const std::vector<uint8_t>& hole, int w, int h, int limit)
-{
-    std::vector<int> d(hole.size(), 0);
-    std::vector<size_t> front;
-    for (size_t q = 0; q < hole.size(); ++q)
-        if (hole[q])
-            d[q] = limit;
-        else
-            front.push_back(q);
-    for (int step = 1; step < limit && !front.empty(); ++step) {
-        std::vector<size_t> next;
-        for (size_t q : front) {
-            const int x = int(q % size_t(w)), y = int(q / size_t(w));
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int nx = x + dx, ny = y + dy;
-                    if (nx < 0 || ny < 0 || nx >= w || ny >= h)
-                        continue;
-                    const size_t p = size_t(ny) * size_t(w) + size_t(nx);
-                    if (d[p] > step) {
-                        d[p] = step;
-                        next.push_back(p);
-                    }
-                }
-        }
-        front = std::move(next);
-    }
-    return d;
-}
-
 } // namespace
 
 void compose_region(const RegionCopies& copies, const Plane& mask, FillOutline outline, int rim,
@@ -170,7 +138,8 @@ void compose_region(const RegionCopies& copies, const Plane& mask, FillOutline o
                         smooth.planes[size_t(c)].data()[q] = kept[size_t(c)];
                 }
             pushpull_fill(smooth, nthreads);
-            const std::vector<int> depth = distance_inside(hole, cw, ch, rim);
+            // The image's edge is not the outline: a copy there keeps its full weight.
+            const std::vector<int> depth = chessboard_distance(hole, cw, { 0, 0, cw, ch }, false);
             for (size_t q = 0; q < n; ++q)
                 if (hole[q] && depth[q] < rim) {
                     const float a = float(depth[q]) / float(rim);

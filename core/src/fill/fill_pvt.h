@@ -75,6 +75,12 @@ void add_guidance(std::vector<Plane>& planes, int ncolour, const std::vector<uin
 /// ones (OIIO's fillholes_pushpull).
 void pushpull_fill(CropLevel& level, int nthreads);
 
+/// Per pixel of `box` (of a `width`-wide mask), its chessboard distance (1, 2, ...) to the
+/// nearest pixel not `inside`; 0 outside. Pixels beyond the box count as outside when
+/// `edge_is_outside`, else as inside (a box that is inside everywhere then gets 2^29).
+std::vector<int> chessboard_distance(
+    const std::vector<uint8_t>& inside, int width, const PixelBox& box, bool edge_is_outside);
+
 /// The thickness of the hole inside `box` (of a `width`-wide mask): the side of the largest
 /// square of hole pixels, 2 d - 1 for the largest chessboard distance d of a hole pixel to
 /// a pixel outside the hole (or the box's edge).
