@@ -147,69 +147,54 @@ inline double seam_error(const OIIO::ImageBuf& result, const OIIO::ImageBuf& sam
     return std::max(excess(columns, in_column), excess(rows, in_row));
 }
 
-/// Control: `sample`'s pixels in a seeded random order, tiled to w x h.
-inline OIIO::ImageBuf shuffled(const OIIO::ImageBuf& sample, int w, int h)
+/// `image`'s pixels rearranged into w x h: pixel (x, y) takes the image's pixel number
+/// `source(x, y)` (row after row).
+template <class Source>
+OIIO::ImageBuf rearranged(const OIIO::ImageBuf& image, int w, int h, Source source)
 {
     PlanarImage p;
     std::string error;
-    planes_from_imagebuf(sample, p, error);
-    const size_t n = p.channels[0].size();
-    std::vector<size_t> order(n);
-    std::iota(order.begin(), order.end(), size_t(0));
-    std::shuffle(order.begin(), order.end(), std::mt19937(7));
+    planes_from_imagebuf(image, p, error);
     PlanarImage out = p;
     for (Plane& c : out.channels)
         c = Plane(w, h);
     for (size_t c = 0; c < p.channels.size(); ++c)
         for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                const size_t i = size_t(y % p.height()) * size_t(p.width()) + size_t(x % p.width());
-                out.channels[c](x, y) = p.channels[c].data()[order[i]];
-            }
+            for (int x = 0; x < w; ++x)
+                out.channels[c](x, y) = p.channels[c].data()[source(x, y)];
     OIIO::ImageBuf buf;
     imagebuf_from_planes(out, buf);
     return buf;
+}
+
+/// Control: `sample`'s pixels in a seeded random order, tiled to w x h.
+inline OIIO::ImageBuf shuffled(const OIIO::ImageBuf& sample, int w, int h)
+{
+    const int sw = sample.spec().width, sh = sample.spec().height;
+    std::vector<size_t> order(size_t(sw) * size_t(sh));
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::shuffle(order.begin(), order.end(), std::mt19937(7));
+    return rearranged(sample, w, h,
+        [&](int x, int y) { return order[size_t(y % sh) * size_t(sw) + size_t(x % sw)]; });
 }
 
 /// Control: `sample` pasted side by side to w x h, every other row of copies shifted by
 /// half the sample's width (a running bond of copies).
 inline OIIO::ImageBuf half_shifted_tiling(const OIIO::ImageBuf& sample, int w, int h)
 {
-    PlanarImage p;
-    std::string error;
-    planes_from_imagebuf(sample, p, error);
-    const int sw = p.width(), sh = p.height();
-    PlanarImage out = p;
-    for (Plane& c : out.channels)
-        c = Plane(w, h);
-    for (size_t c = 0; c < p.channels.size(); ++c)
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                const int shift = (y / sh) % 2 ? sw / 2 : 0;
-                out.channels[c](x, y) = p.channels[c]((x + shift) % sw, y % sh);
-            }
-    OIIO::ImageBuf buf;
-    imagebuf_from_planes(out, buf);
-    return buf;
+    const int sw = sample.spec().width, sh = sample.spec().height;
+    return rearranged(sample, w, h, [&](int x, int y) {
+        const int shift = (y / sh) % 2 ? sw / 2 : 0;
+        return size_t(y % sh) * size_t(sw) + size_t((x + shift) % sw);
+    });
 }
 
 /// `image` pasted 2 x 2: a tile's wrap-around seams inside the picture.
 inline OIIO::ImageBuf tiled_twice(const OIIO::ImageBuf& image)
 {
-    PlanarImage p;
-    std::string error;
-    planes_from_imagebuf(image, p, error);
-    const int w = p.width(), h = p.height();
-    PlanarImage out = p;
-    for (Plane& c : out.channels)
-        c = Plane(2 * w, 2 * h);
-    for (size_t c = 0; c < p.channels.size(); ++c)
-        for (int y = 0; y < 2 * h; ++y)
-            for (int x = 0; x < 2 * w; ++x)
-                out.channels[c](x, y) = p.channels[c](x % w, y % h);
-    OIIO::ImageBuf buf;
-    imagebuf_from_planes(out, buf);
-    return buf;
+    const int w = image.spec().width, h = image.spec().height;
+    return rearranged(image, 2 * w, 2 * h,
+        [&](int x, int y) { return size_t(y % h) * size_t(w) + size_t(x % w); });
 }
 
 } // namespace texsyn::test
