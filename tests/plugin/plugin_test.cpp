@@ -439,6 +439,29 @@ TEST_F(Plugin, NestedRecipesAreBoundedBeforeAnyWork)
         << r.out;
 }
 
+// An OBJ whose mtllib names a FIFO hung every host through OpenMesh (issue #34): texsyn's
+// reader opens no file a mesh names. A bake recipe on such a mesh, through every host.
+TEST_F(Plugin, MeshesNamingFifosDoNotBlockTheHosts)
+{
+    ASSERT_EQ(::mkfifo((dir / "skin.mtl").c_str(), 0644), 0);
+    std::ifstream torus(fs::path(TEXSYN_TEST_DATA).parent_path() / "meshes" / "torus_uv.obj");
+    std::stringstream obj;
+    obj << "mtllib skin.mtl\nmtllib ../../../../../dev/zero\nusemtl skin\n" << torus.rdbuf();
+    write("torus.obj", obj.str());
+    write("bake.texsyn",
+        R"({ "sample": "s.png", "method": "choosy-surface", "mesh": "torus.obj", "levels": 2,)"
+        R"( "bake": "32x32" })");
+    for (const std::string cmd : { "timeout 120 iinfo --stats bake.texsyn",
+             "timeout 120 oiiotool bake.texsyn -o a.exr", "timeout 120 maketx bake.texsyn -o a.tx",
+             "timeout 120 /usr/bin/python3 -c \"import OpenImageIO as o; "
+             "b = o.ImageBuf('bake.texsyn'); print(b.read(), b.spec().width)\"" }) {
+        const ToolRun r = sh(cmd);
+        EXPECT_EQ(r.status, 0) << cmd << ": " << r.out; // 124: the timeout, a hang
+    }
+    EXPECT_TRUE(fs::exists(dir / "a.exr"));
+    EXPECT_TRUE(fs::exists(dir / "a.tx"));
+}
+
 // One OIIO ImageCache shared by 16 threads, as a renderer uses it: each opens recipes
 // through the plugin, four different ones and each of them by four threads at once, and
 // gets exactly the pixels of the recipe run alone. (The ThreadSanitizer build runs this
