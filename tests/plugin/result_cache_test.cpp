@@ -142,6 +142,33 @@ protected:
         return r.out;
     }
 
+    // A child process that holds an exclusive flock() on `lock` until it is killed (the
+    // kernel then frees the lock); -1 if it could not take it.
+    static pid_t hold_lock(const std::string& lock)
+    {
+        int ready[2];
+        if (::pipe(ready) != 0)
+            return -1;
+        const pid_t holder = ::fork();
+        if (holder == 0) { // only async-signal-safe calls here
+            const int fd = ::open(lock.c_str(), O_RDWR);
+            const char locked = fd >= 0 && ::flock(fd, LOCK_EX) == 0;
+            if (::write(ready[1], &locked, 1) != 1 || !locked)
+                ::_exit(1);
+            for (;;)
+                ::pause();
+        }
+        char locked = 0;
+        const bool read = ::read(ready[0], &locked, 1) == 1;
+        ::close(ready[0]);
+        ::close(ready[1]);
+        if (holder > 0 && (!read || !locked)) {
+            ::waitpid(holder, nullptr, 0);
+            return -1;
+        }
+        return holder;
+    }
+
     fs::path dir;
     std::vector<std::string> plains; // the names plain() has made, in order
 };
@@ -264,23 +291,8 @@ TEST_F(ResultCache, ConcurrentProcessesSynthesizeOnce)
     ASSERT_EQ(entries().size(), 1u);
     const std::string key = entries()[0].substr(0, 32);
     fs::remove(dir / "cache" / entries()[0]);
-    const std::string lock = (dir / "cache" / (key + ".lock")).string();
-    int ready[2];
-    ASSERT_EQ(::pipe(ready), 0);
-    const pid_t holder = ::fork();
-    if (holder == 0) { // only async-signal-safe calls here
-        const int fd = ::open(lock.c_str(), O_RDWR);
-        const char locked = fd >= 0 && ::flock(fd, LOCK_EX) == 0;
-        if (::write(ready[1], &locked, 1) != 1 || !locked)
-            ::_exit(1);
-        for (;;)
-            ::pause();
-    }
-    char locked = 0;
-    ASSERT_EQ(::read(ready[0], &locked, 1), 1);
-    ::close(ready[0]);
-    ::close(ready[1]);
-    ASSERT_EQ(locked, 1);
+    const pid_t holder = hold_lock((dir / "cache" / (key + ".lock")).string());
+    ASSERT_GT(holder, 0);
     ToolRun r;
     std::thread processes([&] {
         r = sh("for i in 1 2 3 4; do (oiiotool r.texsyn -d float -o out$i.exr > log$i.txt 2>&1) "
@@ -419,18 +431,16 @@ TEST_F(ResultCache, AStoppedLockHolderDelaysOthersByTheTimeoutOnly)
     expect_uncached_result("r.texsyn", 1);
     const std::string key = entries()[0].substr(0, 32);
     fs::remove(dir / "cache" / entries()[0]);
-    ASSERT_EQ(sh("(flock cache/" + key
-                      + ".lock sleep 300 & echo $! > holder.pid) && sleep 0.5 "
-                        "&& kill -STOP $(cat holder.pid)",
-                  "")
-                  .status,
-        0);
+    const pid_t holder = hold_lock((dir / "cache" / (key + ".lock")).string());
+    ASSERT_GT(holder, 0);
+    ::kill(holder, SIGSTOP);
     const auto start = std::chrono::steady_clock::now();
     const ToolRun r = sh("TEXSYN_CACHE_LOCK_TIMEOUT=2 oiiotool r.texsyn -d float -o a.exr && "
                          "idiff -fail 0 plain0.exr a.exr");
     const double seconds
         = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    sh("kill -KILL $(cat holder.pid); pkill -KILL -f 'sleep 300'", "");
+    ::kill(holder, SIGKILL);
+    ::waitpid(holder, nullptr, 0);
     EXPECT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find(key
                   + ".lock: still held by another process after 2 s "
