@@ -18,6 +18,16 @@ namespace texsyn::detail {
 /// PLY's scalar types (both spellings of each are read).
 enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
 
+/// What a PLY scalar type is: its names, bytes, and the values an ASCII token of it may
+/// hold (for float and double alike, float's finite range: vertices are stored as float).
+struct PlyTypeTraits {
+    const char *name, *alias;
+    int size;
+    bool integer;
+    double low, high;
+};
+const PlyTypeTraits& ply_type_traits(PlyType type);
+
 struct PlyProperty {
     std::string name;
     PlyType type = PlyType::Float32; ///< of the value (of each item for a list)
@@ -59,6 +69,10 @@ enum class LineRead { Line, Unterminated, End, TooLong };
 /// without a line break after it), End (nothing left), or TooLong (more than
 /// kMaxMeshLineBytes; `line` then holds the first kMaxMeshLineBytes).
 LineRead read_mesh_line(std::istream& in, std::string& line);
+
+/// "line N: 'TEXT...': longer than 16 MiB (not KIND?)" for a line read_mesh_line() found
+/// TooLong; `kind` names what the file should hold ("an OBJ file", "PLY data").
+std::string line_too_long(uint64_t number, const std::string& line, const char* kind);
 
 /// "cannot be opened (REASON)" from errno, after a failed open of a mesh file.
 std::string cannot_open_mesh();

@@ -44,6 +44,12 @@ LineRead read_mesh_line(std::istream& in, std::string& line)
     }
 }
 
+std::string line_too_long(uint64_t number, const std::string& line, const char* kind)
+{
+    return at_line(number, line) + "longer than " + std::to_string(kMaxMeshLineBytes >> 20)
+        + " MiB (not " + kind + "?)";
+}
+
 bool too_many_mesh_elements(uint64_t count, const std::string& what_counted, std::string& what)
 {
     if (count <= kMaxMeshElements)

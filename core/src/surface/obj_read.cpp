@@ -229,8 +229,7 @@ bool read_obj_record(const std::string& path, MeshRecord& record, std::string& w
         if (read == LineRead::End)
             break;
         if (read == LineRead::TooLong) {
-            what = at_line(number, line) + "longer than " + std::to_string(kMaxMeshLineBytes >> 20)
-                + " MiB (not an OBJ file?)";
+            what = line_too_long(number, line, "an OBJ file");
             return false;
         }
         if (!reader.read_line(number, line, what))

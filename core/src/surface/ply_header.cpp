@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // PLY headers (Turk's format as MeshLab, Blender and OpenMesh write it). Only the header:
 // ply_read.cpp reads the data.
+#include <iterator>
 #include <sstream>
 
 #include "mesh_detail_pvt.h"
@@ -9,27 +10,25 @@ namespace texsyn::detail {
 
 namespace {
 
+// PLY's scalar types, in PlyType's order.
+const PlyTypeTraits kPlyTypes[] = {
+    { "char", "int8", 1, true, -128.0, 127.0 },
+    { "uchar", "uint8", 1, true, 0.0, 255.0 },
+    { "short", "int16", 2, true, -32768.0, 32767.0 },
+    { "ushort", "uint16", 2, true, 0.0, 65535.0 },
+    { "int", "int32", 4, true, -2147483648.0, 2147483647.0 },
+    { "uint", "uint32", 4, true, 0.0, 4294967295.0 },
+    { "float", "float32", 4, false, -3.4e38, 3.4e38 },
+    { "double", "float64", 8, false, -3.4e38, 3.4e38 },
+};
+
 // A PLY scalar type's name (either spelling) as its type and its bytes, or 0 bytes.
 int ply_type(const std::string& name, PlyType& type)
 {
-    static const struct {
-        const char *name, *alias;
-        PlyType type;
-        int size;
-    } types[] = {
-        { "char", "int8", PlyType::Int8, 1 },
-        { "uchar", "uint8", PlyType::UInt8, 1 },
-        { "short", "int16", PlyType::Int16, 2 },
-        { "ushort", "uint16", PlyType::UInt16, 2 },
-        { "int", "int32", PlyType::Int32, 4 },
-        { "uint", "uint32", PlyType::UInt32, 4 },
-        { "float", "float32", PlyType::Float32, 4 },
-        { "double", "float64", PlyType::Float64, 8 },
-    };
-    for (const auto& t : types)
-        if (name == t.name || name == t.alias) {
-            type = t.type;
-            return t.size;
+    for (size_t t = 0; t < std::size(kPlyTypes); ++t)
+        if (name == kPlyTypes[t].name || name == kPlyTypes[t].alias) {
+            type = PlyType(t);
+            return kPlyTypes[t].size;
         }
     return 0;
 }
@@ -38,6 +37,11 @@ int ply_type(const std::string& name, PlyType& type)
 constexpr uint64_t kMaxHeaderBytes = 1 << 20;
 
 } // namespace
+
+const PlyTypeTraits& ply_type_traits(PlyType type)
+{
+    return kPlyTypes[size_t(type)];
+}
 
 const PlyElement* PlyHeader::element(const std::string& name) const
 {

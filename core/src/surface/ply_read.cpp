@@ -18,58 +18,20 @@ namespace texsyn::detail {
 
 namespace {
 
-const char* type_name(PlyType type)
-{
-    switch (type) {
-    case PlyType::Int8:
-        return "char";
-    case PlyType::UInt8:
-        return "uchar";
-    case PlyType::Int16:
-        return "short";
-    case PlyType::UInt16:
-        return "ushort";
-    case PlyType::Int32:
-        return "int";
-    case PlyType::UInt32:
-        return "uint";
-    case PlyType::Float32:
-        return "float";
-    case PlyType::Float64:
-        return "double";
-    }
-    return "?";
-}
+// Names a value in messages ("vertex 2's x", "face 1's vertex_indices count"); the text
+// is made only when a message needs it, not for each of millions of values.
+struct ValueName {
+    const PlyElement& element;
+    uint64_t index; // from 0
+    const PlyProperty& property;
+    bool count = false; // the list's item count
 
-bool is_integer(PlyType type)
-{
-    return type != PlyType::Float32 && type != PlyType::Float64;
-}
-
-// The smallest and largest value of an integer type.
-void integer_range(PlyType type, double& low, double& high)
-{
-    switch (type) {
-    case PlyType::Int8:
-        low = -128, high = 127;
-        return;
-    case PlyType::UInt8:
-        low = 0, high = 255;
-        return;
-    case PlyType::Int16:
-        low = -32768, high = 32767;
-        return;
-    case PlyType::UInt16:
-        low = 0, high = 65535;
-        return;
-    case PlyType::Int32:
-        low = -2147483648.0, high = 2147483647.0;
-        return;
-    default:
-        low = 0, high = 4294967295.0;
-        return;
+    std::string text() const
+    {
+        return element.name + " " + std::to_string(index + 1) + "'s " + property.name
+            + (count ? " count" : "");
     }
-}
+};
 
 // The values of a PLY file's data section, one at a time, as doubles (every PLY type
 // converts exactly). Failures leave a reason without the file name.
@@ -81,11 +43,11 @@ public:
         , m_number(first_line - 1)
     { }
 
-    // The next value, of `type`, for the property `what_for` ("vertex 2's x").
-    bool next(PlyType type, const std::string& what_for, double& value, std::string& what)
+    // The next value, of `type`, for the value `name`.
+    bool next(PlyType type, const ValueName& name, double& value, std::string& what)
     {
-        return m_format == PlyHeader::Format::Ascii ? next_token(type, what_for, value, what)
-                                                    : next_bytes(type, value, what);
+        return m_format == PlyHeader::Format::Ascii ? next_token(type, name, value, what)
+                                                    : next_bytes(type, value);
     }
 
     // Starts an element: in an ASCII file, the next line that is not blank.
@@ -102,8 +64,7 @@ public:
                 return false;
             }
             if (read == LineRead::TooLong) {
-                what = at_line(m_number, m_line) + "longer than "
-                    + std::to_string(kMaxMeshLineBytes >> 20) + " MiB (not PLY data?)";
+                what = line_too_long(m_number, m_line, "PLY data");
                 return false;
             }
             m_terminated = read == LineRead::Line;
@@ -111,13 +72,13 @@ public:
         return true;
     }
 
-    // Ends an element `name`: in an ASCII file, its line must hold nothing more.
-    bool end_element(const std::string& name, std::string& what) const
+    // Ends element `index` of `element`: in an ASCII file, its line must hold nothing more.
+    bool end_element(const PlyElement& element, uint64_t index, std::string& what) const
     {
         if (m_format != PlyHeader::Format::Ascii
             || m_line.find_first_not_of(" \t\r", m_at) == m_line.npos)
             return true;
-        what = at_line(m_number, m_line) + name
+        what = at_line(m_number, m_line) + element.name + " " + std::to_string(index + 1)
             + " has more values than the header's properties (one element per line)";
         return false;
     }
@@ -130,11 +91,11 @@ public:
     bool truncated() const { return m_truncated; }
 
 private:
-    bool next_token(PlyType type, const std::string& what_for, double& value, std::string& what)
+    bool next_token(PlyType type, const ValueName& name, double& value, std::string& what)
     {
         if (m_line.find_first_not_of(" \t\r", m_at) == m_line.npos) {
             m_truncated = !m_terminated; // the file ends in this line: it was cut
-            what = at_line(m_number, m_line) + "the line ends before " + what_for
+            what = at_line(m_number, m_line) + "the line ends before " + name.text()
                 + " (one element per line)";
             return false;
         }
@@ -146,23 +107,20 @@ private:
         const std::string token = m_line.substr(begin, end - begin);
         char* stop = nullptr;
         value = std::strtod(token.c_str(), &stop);
-        double low = -3.4e38, high = 3.4e38; // float's range (a vertex is stored as float)
-        if (is_integer(type))
-            integer_range(type, low, high);
-        if (stop != token.c_str() + token.size() || !std::isfinite(value) || value < low
-            || value > high || (is_integer(type) && value != std::floor(value))) {
-            what = at_line(m_number, m_line) + what_for + ": '" + token.substr(0, 24) + "' is not "
-                + (is_integer(type) ? "an integer" : "a finite number") + " of PLY type "
-                + type_name(type);
+        const PlyTypeTraits& t = ply_type_traits(type);
+        if (stop != token.c_str() + token.size() || !std::isfinite(value) || value < t.low
+            || value > t.high || (t.integer && value != std::floor(value))) {
+            what = at_line(m_number, m_line) + name.text() + ": '" + token.substr(0, 24)
+                + "' is not " + (t.integer ? "an integer" : "a finite number") + " of PLY type "
+                + t.name;
             return false;
         }
         return true;
     }
 
-    bool next_bytes(PlyType type, double& value, std::string& what)
+    bool next_bytes(PlyType type, double& value)
     {
-        static const int sizes[] = { 1, 1, 2, 2, 4, 4, 4, 8 };
-        const int size = sizes[int(type)];
+        const int size = ply_type_traits(type).size;
         unsigned char bytes[8];
         if (!m_in.read(reinterpret_cast<char*>(bytes), size)) {
             m_truncated = true;
@@ -299,22 +257,21 @@ public:
                                          : PlyRoles();
         std::vector<double> scalars(element.properties.size());
         for (uint64_t i = 0; i < element.count; ++i) {
-            const std::string name = element.name + " " + std::to_string(i + 1);
             m_face_texcoords.clear();
             if (!m_values.begin_element(what))
                 return false;
             for (size_t k = 0; k < element.properties.size(); ++k) {
                 const PlyProperty& p = element.properties[k];
-                const std::string what_for = name + "'s " + p.name;
+                const ValueName name { element, i, p };
                 if (p.count_size == 0) {
-                    if (!m_values.next(p.type, what_for, scalars[k], what))
+                    if (!m_values.next(p.type, name, scalars[k], what))
                         return false;
-                } else if (!read_list(p, what_for, int(k) == roles.indices,
-                               int(k) == roles.texcoords, what)) {
+                } else if (!read_list(
+                               name, int(k) == roles.indices, int(k) == roles.texcoords, what)) {
                     return false;
                 }
             }
-            if (!m_values.end_element(name, what))
+            if (!m_values.end_element(element, i, what))
                 return false;
             if (is_vertex)
                 add_vertex(roles, scalars);
@@ -325,19 +282,19 @@ public:
     }
 
 private:
-    bool read_list(const PlyProperty& p, const std::string& what_for, bool indices, bool texcoords,
-        std::string& what)
+    bool read_list(const ValueName& name, bool indices, bool texcoords, std::string& what)
     {
+        const PlyProperty& p = name.property;
         double count = 0;
-        if (!m_values.next(p.count_type, what_for + " count", count, what))
+        if (!m_values.next(p.count_type, { name.element, name.index, p, true }, count, what))
             return false;
         if (count < 0 || count > double(kMaxMeshElements)) {
-            what = what_for + " has " + std::to_string(int64_t(count)) + " items";
+            what = name.text() + " has " + std::to_string(int64_t(count)) + " items";
             return false;
         }
         for (uint64_t j = 0; j < uint64_t(count); ++j) {
             double value = 0;
-            if (!m_values.next(p.type, what_for, value, what))
+            if (!m_values.next(p.type, name, value, what))
                 return false;
             if (indices)
                 m_record.corners.push_back(int64_t(value));
@@ -400,9 +357,9 @@ bool check_ply_header(const PlyHeader& header, std::string& what)
         what = "the PLY header has no face element with a vertex_indices list";
         return false;
     }
-    if (!is_integer(face->properties[f.indices].type)) {
+    if (!ply_type_traits(face->properties[f.indices].type).integer) {
         what = std::string("the PLY face element's ") + face->properties[f.indices].name
-            + " list is of type " + type_name(face->properties[f.indices].type)
+            + " list is of type " + ply_type_traits(face->properties[f.indices].type).name
             + " (vertex indices are integers)";
         return false;
     }
