@@ -17,7 +17,8 @@ cd "$work"
 unset OCIO TEXSYN_CACHE
 samples="$repo/data/samples"
 oiiotool "$samples/bricks.png" --cut 128x128+0+0 -o bricks128.png
-cp "$samples/bricks.png" "$samples/grass.png" "$samples/tiles_green.png" .
+cp "$samples/bricks.png" "$samples/grass.png" "$samples/tiles_green.png" \
+   "$samples/paper_crinkled.png" "$samples/rust.png" .
 
 # Runs a command; prints "seconds peak_MB" (wall time, the child's largest resident set).
 measure() {
@@ -49,3 +50,7 @@ workload "bricks 128 -> 512" bricks128.png 512x512
 workload "grass 256 -> 1024" grass.png 1024x1024
 workload "tiles 256 -> 1024" tiles_green.png 1024x1024
 workload "bricks 256 -> 2048" bricks.png 2048x2048
+# Samples that try one level fewer: on the output itself (twice the sample) and on a trial.
+workload "paper 128 -> 512" paper_crinkled.png 512x512
+workload "rust 256 -> 512" rust.png 512x512
+workload "rust 256 -> 1024" rust.png 1024x1024

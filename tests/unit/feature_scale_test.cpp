@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include "feature_scale/feature_scale_pvt.h"
+#include "feature_scale/structure_distance_pvt.h"
+#include "structure_metric.h"
 #include "test_samples.h"
 
 using namespace texsyn;
@@ -220,4 +223,48 @@ TEST(FeatureScale, DescribedForTheLog)
     EXPECT_EQ(describe_feature_scale(s), "feature size 42 px (repeats every 42 x 18 px)");
     s.period_y = 0.0;
     EXPECT_EQ(describe_feature_scale(s), "feature size 42 px (repeats every 42 x - px)");
+}
+
+TEST(StructureDistance, AutocorrelationWindowOfACheckerboard)
+{
+    // 8-pixel squares: anticorrelated one square along an axis, correlated two squares
+    // along it and one square diagonally.
+    const PlanarImage board = checkerboard(128, 8);
+    const int r = 16, side = 2 * r + 1;
+    const std::vector<double> window = detail::autocorrelation_window(board.channels[0], r, 1);
+    ASSERT_EQ(window.size(), size_t(side) * size_t(side));
+    auto at
+        = [&](int dx, int dy) { return window[size_t(dy + r) * size_t(side) + size_t(dx + r)]; };
+    EXPECT_DOUBLE_EQ(at(0, 0), 1.0);
+    EXPECT_LT(at(8, 0), -0.9);
+    EXPECT_LT(at(0, -8), -0.9);
+    EXPECT_GT(at(16, 0), 0.9);
+    EXPECT_GT(at(8, 8), 0.9);
+    EXPECT_NEAR(at(4, 0), 0.0, 0.1);
+    const PlanarImage flat = pattern(32, 32, [](int, int) { return 0.5; });
+    for (double v : detail::autocorrelation_window(flat.channels[0], 8, 1))
+        EXPECT_EQ(v, 0.0);
+}
+
+TEST(StructureDistance, NoneToItselfSmallToItsCopiesLargeToItsShuffle)
+{
+    for (const char* name : { "paper_crinkled.png", "rust.png", "bricks.png" }) {
+        SCOPED_TRACE(name);
+        const OIIO::ImageBuf sample = test::linear_sample(name);
+        const PlanarImage planes = test::planes_of(sample);
+        const double feature = estimate_feature_scale(planes, 1).size;
+        const int w = sample.spec().width, h = sample.spec().height;
+        EXPECT_EQ(detail::structure_distance(planes, planes, feature, 1), 0.0);
+        const double tiled = detail::structure_distance(
+            test::planes_of(test::tiled_twice(sample)), planes, feature, 1);
+        const double shuffle = detail::structure_distance(
+            test::planes_of(test::shuffled(sample, 2 * w, 2 * h)), planes, feature, 1);
+        // Pasted copies keep every feature whole (their seams cost a little); a shuffle
+        // keeps none.
+        EXPECT_GT(shuffle, 0.09);
+        EXPECT_LT(tiled, 0.6 * shuffle) << tiled << " tiled, " << shuffle << " shuffled";
+        EXPECT_EQ(detail::structure_distance(
+                      test::planes_of(test::tiled_twice(sample)), planes, feature, 4),
+            tiled);
+    }
 }

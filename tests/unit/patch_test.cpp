@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "patch/patch_pvt.h"
+#include "structure_metric.h"
 #include "test_metrics.h"
 #include "test_samples.h"
 
@@ -381,6 +382,43 @@ TEST(PatchOptions, ADefaultScheduleFollowsFewerLevels)
     EXPECT_EQ(fill.iterations_at(0), 4);
     fill.iterations = { 4, 6 };
     EXPECT_FALSE(fill.validate(error));
+}
+
+// A small sample whose features are half its side (paper crinkles, 128 px) gets 4
+// automatic levels, and one fewer is tried on the output (256 px: at most twice the
+// sample); the schedule kept is the one whose result the tests' own, independent structure
+// measure also finds nearer the sample (within 10%), its output is that schedule's exactly,
+// and -v says so. Given levels, or a repeating sample, are not second-guessed.
+TEST(PatchSynthesize, ASmallSampleKeepsTheNearerOfTwoLevelCounts)
+{
+    const OIIO::ImageBuf sample = linear_sample("paper_crinkled.png");
+    PatchReport report;
+    const OIIO::ImageBuf chosen
+        = patch_synthesize(sample, options(256, 256), nullptr, nullptr, &report);
+    ASSERT_FALSE(chosen.has_error()) << chosen.geterror();
+    EXPECT_NE(report.schedule.find("levels kept over"), std::string::npos) << report.schedule;
+    ASSERT_TRUE(report.levels == 3 || report.levels == 4) << report.levels;
+    OIIO::ImageBuf given[2];
+    double error[2];
+    for (int i = 0; i < 2; ++i) {
+        PatchOptions opt = options(256, 256);
+        opt.levels = 3 + i;
+        PatchReport as_given;
+        given[i] = patch_synthesize(sample, opt, nullptr, nullptr, &as_given);
+        ASSERT_FALSE(given[i].has_error()) << given[i].geterror();
+        EXPECT_EQ(as_given.schedule, std::to_string(3 + i) + " levels, as given");
+        error[i] = test::arrangement_error(given[i], sample, 16);
+    }
+    const int kept = report.levels - 3;
+    EXPECT_EQ(pixel_hash(chosen), pixel_hash(given[kept]));
+    EXPECT_LE(error[kept], 1.1 * error[1 - kept])
+        << error[0] << " (3 levels), " << error[1] << " (4)";
+
+    PatchReport bricks;
+    ASSERT_FALSE(
+        patch_synthesize(linear_sample("bricks.png"), options(256, 256), nullptr, nullptr, &bricks)
+            .has_error());
+    EXPECT_EQ(bricks.schedule.find("kept over"), std::string::npos) << bricks.schedule;
 }
 
 namespace {

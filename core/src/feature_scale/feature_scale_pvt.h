@@ -23,6 +23,11 @@ Plane measured_luminance(const PlanarImage& sample, int nthreads, int& factor);
 void axis_autocorrelation(
     const Plane& plane, int nthreads, std::vector<double>& along_x, std::vector<double>& along_y);
 
+/// The normalised linear autocorrelation of `plane` at every shift (dx, dy) with |dx|, |dy|
+/// at most `radius` (and less than the plane's sides), row by row from (-r, -r): 1 at the
+/// centre; all zeros for a constant plane.
+std::vector<double> autocorrelation_window(const Plane& plane, int radius, int nthreads);
+
 /// The repeat of a profile from axis_autocorrelation (FeatureScale::period_x's rule), with
 /// sub-pixel precision; 0 with `strength` 0 if there is none.
 double profile_period(const std::vector<double>& profile, double& strength);

@@ -19,6 +19,9 @@ constexpr int kMaxReduction = 8;
 // A feature at the coarsest level at most this fraction of the largest patch.
 constexpr double kFeatureInPatch = 0.75;
 constexpr int kMinLevels = 3, kMaxLevels = 8;
+// Samples up to this shorter side may try one level fewer (their trials stay within what
+// structure_distance measures unreduced).
+constexpr int kMaxTrialSide = 512;
 
 int odd_at_most(int v)
 {
@@ -58,6 +61,11 @@ int automatic_levels(int side, const FeatureScale& scale, int largest_patch, std
                     + std::to_string(int(std::lround(feature))) + " px and ")
         + std::to_string(coarsest) + " px of the sample's side";
     return levels;
+}
+
+int alternative_levels(int side, const FeatureScale& scale, int levels)
+{
+    return !scale.periodic() && side <= kMaxTrialSide && levels > kMinLevels ? levels - 1 : 0;
 }
 
 } // namespace texsyn::detail

@@ -31,4 +31,12 @@ int automatic_iterations(int level, int levels);
 /// 11-pixel patches of full-resolution noise.
 int automatic_levels(int side, const FeatureScale& scale, int largest_patch, std::string& reason);
 
+/// The other level count worth trying when the automatic one is `levels` (0 if none): one
+/// fewer for a sample that does not repeat, whose shorter side is at most 512 pixels and
+/// whose levels are more than the least (3). Such a sample holds few of its features, and
+/// one level more or fewer decides whether they are laid out as the sample lays them or
+/// merged into streaks; which does, the sample alone does not say (patch_synthesize
+/// tries both).
+int alternative_levels(int side, const FeatureScale& scale, int levels);
+
 } // namespace texsyn::detail

@@ -11,6 +11,7 @@
 #include <texsyn/pyramid.h>
 #include <texsyn/random.h>
 
+#include "feature_scale/structure_distance_pvt.h"
 #include "methods/method_helpers_pvt.h"
 #include "methods/source_map_pvt.h"
 #include "patch_pvt.h"
@@ -136,49 +137,22 @@ bool guide_plane(const OIIO::ImageBuf& guide, int sw, int sh, const std::vector<
     return true;
 }
 
-bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOptions& given,
-    OIIO::ImageBuf* source_map, const OIIO::ImageBuf* guide, PatchReport* report)
+// What one run of the schedule copies: per output pixel, the picked pixel of the finest
+// level's sample atlas (a variant's pixel with isotropic=1), `atlas_width` wide.
+struct Copies {
+    std::vector<uint32_t> picked;
+    int atlas_width = 0;
+};
+
+// Texture optimization of `planes` (the sample's, then the weighted guidance channel; sw x
+// sh) into opt.width x opt.height with opt's resolved schedule, coarse to fine. Progress
+// goes from `progress_from` over `progress_span`.
+Copies optimize(const std::vector<Plane>& planes, int sw, int sh, const PatchOptions& opt,
+    double progress_from, double progress_span)
 {
-    std::string error;
-    PlanarImage in;
-    if (!detail::validated_sample(dst, sample, given, in))
-        return false;
-    auto fail = [&](const std::string& message) {
-        dst.errorfmt("{}", message);
-        return false;
-    };
-    const int sw = in.width(), sh = in.height();
-    const int w = given.width ? given.width : sw, h = given.height ? given.height : sh;
-    const std::vector<Plane> colour(in.channels.begin(), in.channels.begin() + in.ncolor());
-    const FeatureScale scale = estimate_feature_scale(in, given.nthreads);
-    PatchOptions opt = given;
-    opt.width = w;
-    opt.height = h;
-    std::string schedule;
-    if (!resolve_schedule(sw, sh, w, h, scale, opt, schedule, error)
-        || !detail::check_memory(patch_memory_estimate(sw, sh, in.nchannels(), w, h, opt),
-            "size=" + size_text(w, h), error))
-        return fail(error);
-    if (guide && opt.guidance <= 0.0f)
-        return fail("guidance=0 : a guide needs a guidance weight above 0");
-    const int levels = opt.levels;
+    const int w = opt.width, h = opt.height, levels = opt.levels;
     const detail::Wrap wrap { opt.wrap == PatchWrap::Both || opt.wrap == PatchWrap::X,
         opt.wrap == PatchWrap::Both || opt.wrap == PatchWrap::Y };
-
-    // The planes synthesized: the sample's, then the guidance channel (weighted).
-    std::vector<Plane> planes = in.channels;
-    if (opt.guidance > 0.0f) {
-        Plane g;
-        if (guide) {
-            if (!guide_plane(*guide, sw, sh, colour, g, error))
-                return fail(error);
-        } else {
-            g = detail::guidance_channel(colour, int(std::lround(scale.size)));
-        }
-        for (size_t i = 0; i < g.size(); ++i)
-            g.data()[i] *= opt.guidance;
-        planes.push_back(std::move(g));
-    }
     // The sample's levels: with isotropic=1 its rotations and mirror images side by side,
     // each reduced on its own (a variant's pyramid is not the variant of the pyramid).
     const int variants = detail::variant_count(sw, sh, opt.isotropic != 0);
@@ -231,15 +205,10 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
         // The start: the vote of the random field, or of the coarser level's matches carried
         // to this level (its own, sharp pixels rather than the coarser result blurred up:
         // the finer level then starts where the coarser one converged).
-        if (!coarsest && std::getenv("XP_NOUP")) {
-            for (Plane& pl : out)
-                pl = expand_plane(pl, lw, lh, Boundary::Circular, opt.nthreads);
-        } else {
-            detail::vote(level, field, patches.front(), coarsest ? PatchVote::Mean : opt.vote,
-                opt.nthreads, opt.stop, out, wrap);
-            if (!coarsest)
-                match_histograms();
-        }
+        detail::vote(level, field, patches.front(), coarsest ? PatchVote::Mean : opt.vote,
+            opt.nthreads, opt.stop, out, wrap);
+        if (!coarsest)
+            match_histograms();
         // k-coherence where the layout forms (the lists of the level's largest patch serve
         // its smaller ones); the finest level refines its coarser level's field with
         // propagation and a local random search.
@@ -278,42 +247,155 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
                 detail::vote(level, field, p, opt.vote, opt.nthreads, opt.stop, out, wrap);
                 match_histograms();
                 done += double(lw) * double(lh);
-                detail::report_progress(opt.progress, opt.stop, float(done / total));
+                detail::report_progress(
+                    opt.progress, opt.stop, float(progress_from + progress_span * done / total));
             }
         }
     }
 
-    // The copy: each pixel the voted-for sample pixel nearest the average, as a pixel of the
-    // sample as given (a variant's pixel is one of the sample's).
-    const int p = opt.patch.back();
-    const std::vector<uint32_t> picked
-        = detail::nearest_votes(level, field, p, out, opt.nthreads, opt.stop, wrap);
+    // The copy: each pixel the voted-for sample pixel nearest the average.
+    Copies copies;
+    copies.picked
+        = detail::nearest_votes(level, field, opt.patch.back(), out, opt.nthreads, opt.stop, wrap);
+    copies.atlas_width = level.pixels.width;
     detail::throw_if_stopped(opt.stop);
-    std::vector<uint32_t> chosen(picked.size());
-    std::vector<uint8_t> turns(picked.size());
-    for (size_t q = 0; q < picked.size(); ++q) {
-        const int x = int(picked[q] % uint32_t(level.pixels.width));
-        const int y = int(picked[q] / uint32_t(level.pixels.width));
-        chosen[q] = detail::variant_source(x / sw, sw, sh, x % sw, y);
-        turns[q] = uint8_t(x / sw);
+    return copies;
+}
+
+// The output `copies` make, as pixels of the sample as given (a variant's pixel is one of
+// the sample's): per output pixel the sample index in `chosen` and the variant in `turns`.
+struct Copied {
+    std::vector<uint32_t> chosen;
+    std::vector<uint8_t> turns;
+    PlanarImage image;
+};
+
+Copied copied(const Copies& copies, const PlanarImage& in, int w, int h)
+{
+    const int sw = in.width(), sh = in.height();
+    Copied c;
+    c.chosen.resize(copies.picked.size());
+    c.turns.resize(copies.picked.size());
+    for (size_t q = 0; q < copies.picked.size(); ++q) {
+        const int x = int(copies.picked[q] % uint32_t(copies.atlas_width));
+        const int y = int(copies.picked[q] / uint32_t(copies.atlas_width));
+        c.chosen[q] = detail::variant_source(x / sw, sw, sh, x % sw, y);
+        c.turns[q] = uint8_t(x / sw);
     }
-    std::vector<Plane> result(size_t(in.nchannels()), Plane(w, h));
-    for (size_t c = 0; c < result.size(); ++c)
-        for (size_t q = 0; q < chosen.size(); ++q)
-            result[c].data()[q] = in.channels[c].data()[chosen[q]];
+    c.image.channel_names = in.channel_names;
+    c.image.alpha_channel = in.alpha_channel;
+    c.image.channels.assign(size_t(in.nchannels()), Plane(w, h));
+    for (size_t ch = 0; ch < c.image.channels.size(); ++ch)
+        for (size_t q = 0; q < c.chosen.size(); ++q)
+            c.image.channels[ch].data()[q] = in.channels[ch].data()[c.chosen[q]];
+    return c;
+}
+
+// The copies of the synthesis with opt's schedule, or, where the automatic levels could as
+// well be one fewer (patch_schedule_pvt.h: alternative_levels), of whichever of the two
+// arranges the sample's features nearer the way the sample does: both run on a trial
+// output (the output itself when it is at most twice the sample's size, else that size),
+// compared by structure_distance; `schedule` then says which was kept and why, and `opt`
+// holds the kept levels and iterations.
+Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
+    const FeatureScale& scale, bool automatic_levels, PatchOptions& opt, std::string& schedule)
+{
+    const int sw = in.width(), sh = in.height();
+    const int fewer
+        = automatic_levels ? detail::alternative_levels(std::min(sw, sh), scale, opt.levels) : 0;
+    PatchOptions deeper = opt;
+    deeper.width = std::min(opt.width, 2 * sw);
+    deeper.height = std::min(opt.height, 2 * sh);
+    if (fewer == 0
+        || levels_that_fit(sw, sh, deeper.width, deeper.height, opt.levels, opt) < opt.levels)
+        return optimize(planes, sw, sh, opt, 0.0, 1.0);
+    const bool final_size = deeper.width == opt.width && deeper.height == opt.height;
+    const double span = final_size ? 0.5 : 0.25;
+    PatchOptions shallower = deeper;
+    shallower.levels = fewer;
+    shallower.iterations.clear();
+    for (int l = 0; l < fewer; ++l)
+        shallower.iterations.push_back(opt.iterations_at(l));
+    Copies a = optimize(planes, sw, sh, deeper, 0.0, span);
+    Copies b = optimize(planes, sw, sh, shallower, span, span);
+    const double da = detail::structure_distance(
+        copied(a, in, deeper.width, deeper.height).image, in, scale.size, opt.nthreads);
+    const double db = detail::structure_distance(
+        copied(b, in, deeper.width, deeper.height).image, in, scale.size, opt.nthreads);
+    const bool keep_fewer = db < da;
+    char why[200];
+    std::snprintf(why, sizeof(why),
+        "; %d levels kept over %d: structure distance %.3f against %.3f on a %dx%d trial",
+        keep_fewer ? fewer : opt.levels, keep_fewer ? opt.levels : fewer, keep_fewer ? db : da,
+        keep_fewer ? da : db, deeper.width, deeper.height);
+    schedule += why;
+    if (keep_fewer) {
+        opt.levels = shallower.levels;
+        opt.iterations = shallower.iterations;
+    }
+    if (final_size)
+        return keep_fewer ? b : a;
+    return optimize(planes, sw, sh, opt, 2 * span, 1.0 - 2 * span);
+}
+
+bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOptions& given,
+    OIIO::ImageBuf* source_map, const OIIO::ImageBuf* guide, PatchReport* report)
+{
+    std::string error;
+    PlanarImage in;
+    if (!detail::validated_sample(dst, sample, given, in))
+        return false;
+    auto fail = [&](const std::string& message) {
+        dst.errorfmt("{}", message);
+        return false;
+    };
+    const int sw = in.width(), sh = in.height();
+    const int w = given.width ? given.width : sw, h = given.height ? given.height : sh;
+    const std::vector<Plane> colour(in.channels.begin(), in.channels.begin() + in.ncolor());
+    const FeatureScale scale = estimate_feature_scale(in, given.nthreads);
+    PatchOptions opt = given;
+    opt.width = w;
+    opt.height = h;
+    std::string schedule;
+    if (!resolve_schedule(sw, sh, w, h, scale, opt, schedule, error)
+        || !detail::check_memory(patch_memory_estimate(sw, sh, in.nchannels(), w, h, opt),
+            "size=" + size_text(w, h), error))
+        return fail(error);
+    if (guide && opt.guidance <= 0.0f)
+        return fail("guidance=0 : a guide needs a guidance weight above 0");
+
+    // The planes synthesized: the sample's, then the guidance channel (weighted).
+    std::vector<Plane> planes = in.channels;
+    if (opt.guidance > 0.0f) {
+        Plane g;
+        if (guide) {
+            if (!guide_plane(*guide, sw, sh, colour, g, error))
+                return fail(error);
+        } else {
+            g = detail::guidance_channel(colour, int(std::lround(scale.size)));
+        }
+        for (size_t i = 0; i < g.size(); ++i)
+            g.data()[i] *= opt.guidance;
+        planes.push_back(std::move(g));
+    }
+    const Copies copies = chosen_copies(planes, in, scale, given.levels == 0, opt, schedule);
+    Copied result = copied(copies, in, w, h);
+    const detail::Wrap wrap { opt.wrap == PatchWrap::Both || opt.wrap == PatchWrap::X,
+        opt.wrap == PatchWrap::Both || opt.wrap == PatchWrap::Y };
     if (report) {
-        report->levels = levels;
+        report->levels = opt.levels;
         report->scale = scale;
         report->schedule = schedule;
-        report->used_fraction = detail::used_fraction(chosen, size_t(sw) * size_t(sh));
+        report->used_fraction = detail::used_fraction(result.chosen, size_t(sw) * size_t(sh));
         report->largest_copy
-            = detail::largest_copy(picked, w, h, level.pixels.width, sh, wrap.x, wrap.y);
+            = detail::largest_copy(copies.picked, w, h, copies.atlas_width, sh, wrap.x, wrap.y);
         report->largest_copy_fraction = double(report->largest_copy) / (double(sw) * double(sh));
     }
     if (source_map)
         detail::write_source_map(
-            *source_map, chosen, w, h, sw, sw, sh, opt.isotropic ? &turns : nullptr);
-    detail::write_synthesis(dst, std::move(result), in, sample, "patch", opt, source_map);
+            *source_map, result.chosen, w, h, sw, sw, sh, opt.isotropic ? &result.turns : nullptr);
+    detail::write_synthesis(
+        dst, std::move(result.image.channels), in, sample, "patch", opt, source_map);
     if (wrap.x || wrap.y)
         dst.specmod().attribute("wrapmodes",
             std::string(wrap.x ? "periodic" : "black") + "," + (wrap.y ? "periodic" : "black"));
