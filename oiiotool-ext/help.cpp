@@ -191,6 +191,9 @@ void print_methods()
 void print_version()
 {
     std::printf("texsyn %s\n", version());
+    const std::string gpl = gpl_components();
+    if (!gpl.empty())
+        std::printf("GPL build: %s (this binary is under the GPL, not Apache-2.0)\n", gpl.c_str());
 }
 
 } // namespace texsyn::cli

@@ -9,7 +9,8 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_
 if(rc)
   message(FATAL_ERROR "install failed: ${rc}")
 endif()
-foreach(f bin/texsyn include/texsyn/synthesis.h share/texsyn/ocio/config.ocio
+foreach(f bin/texsyn include/texsyn/synthesis.h include/texsyn/version.h
+          lib/pkgconfig/texsyn.pc share/texsyn/ocio/config.ocio
           lib/cmake/texsyn/texsynConfig.cmake lib/texsyn/plugins/texsyn.imageio.so)
   if(NOT EXISTS ${WORK_DIR}/prefix/${f})
     message(FATAL_ERROR "install is missing ${f}")
@@ -28,6 +29,29 @@ endif()
 execute_process(COMMAND ${WORK_DIR}/build/downstream RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the downstream program failed: ${rc}")
+endif()
+# The same program built with pkg-config alone (no CMake), as other build systems would.
+execute_process(COMMAND ${CMAKE_COMMAND} -E env PKG_CONFIG_PATH=${WORK_DIR}/prefix/lib/pkgconfig
+                        pkg-config --cflags --libs texsyn
+                RESULT_VARIABLE rc OUTPUT_VARIABLE flags OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(rc OR NOT flags MATCHES "-ltexsyn")
+  message(FATAL_ERROR "pkg-config --cflags --libs texsyn failed: ${rc} ${flags}")
+endif()
+separate_arguments(flags UNIX_COMMAND "${flags}")
+execute_process(COMMAND c++ -std=c++17 ${SOURCE_DIR}/main.cpp ${flags}
+                        -Wl,-rpath,${WORK_DIR}/prefix/lib -o ${WORK_DIR}/downstream_pc
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "building with pkg-config's flags failed: ${rc} ${err}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/downstream_pc RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(rc OR NOT out MATCHES "texsyn [0-9]+\\.[0-9]+\\.[0-9]+ ")
+  message(FATAL_ERROR "the pkg-config-built program failed: ${rc} ${out}")
+endif()
+# The installed library's SONAME names major.minor while the version is 0.x.
+execute_process(COMMAND readelf -d ${WORK_DIR}/prefix/lib/libtexsyn.so OUTPUT_VARIABLE dynamic)
+if(NOT dynamic MATCHES "Library soname: \\[libtexsyn\\.so\\.0\\.[0-9]+\\]")
+  message(FATAL_ERROR "libtexsyn's SONAME is not libtexsyn.so.0.MINOR: ${dynamic}")
 endif()
 execute_process(COMMAND ${WORK_DIR}/prefix/bin/texsyn --version RESULT_VARIABLE rc)
 if(rc)

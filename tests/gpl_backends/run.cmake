@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # ctest driver: builds texsyn with the optional GPL backends (FFTW, CGAL's remesher) in a
 # scratch tree and runs the tests that compare them with the permissive defaults: FFT and
-# pyramid tests (FFTW with KissFFT), surface mesh tests (CGAL's remesher with texsyn's own).
+# pyramid tests (FFTW with KissFFT), surface mesh tests (CGAL's remesher with texsyn's own),
+# and checks that its `texsyn --version` names the GPL backends.
 # The default build (the one the rest of the suite tests) has no GPL code, so this is the
 # only place these backends are exercised. Inputs: SOURCE_DIR, WORK_DIR.
 # It compiles the library a second time, the largest item of the suite: at -O1, since the
@@ -16,7 +17,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}
 if(rc)
   message(FATAL_ERROR "configuring the GPL backends build failed: ${rc}")
 endif()
-execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR} -j2 --target ${tests}
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR} -j2 --target ${tests} texsyn_cli
                 OUTPUT_QUIET RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "building the GPL backends build failed: ${rc}")
@@ -27,3 +28,9 @@ foreach(t ${tests})
     message(FATAL_ERROR "${t} with the GPL backends failed: ${rc}")
   endif()
 endforeach()
+# Such a build says so.
+execute_process(COMMAND ${WORK_DIR}/oiiotool-ext/texsyn --version RESULT_VARIABLE rc
+                OUTPUT_VARIABLE out)
+if(rc OR NOT out MATCHES "GPL build: FFTW, CGAL")
+  message(FATAL_ERROR "texsyn --version of the GPL build does not say so: ${rc} ${out}")
+endif()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Every synthesis method's entry points, in the ImageBufAlgo style: this header includes
-// each method's own header (one per method, listed below) and the version.
+// The whole public API: this header includes every header of include/texsyn (each
+// method's entry points, in the ImageBufAlgo style, and what they share; a test checks
+// that none is left out).
 //
 // Rules for every method's functions:
 //  - Two forms: `bool f(ImageBuf& dst, …)` does the work; `ImageBuf f(…)` wraps it and
@@ -18,10 +19,34 @@
 
 #include <texsyn/cascade.h>
 #include <texsyn/choosy.h>
+#include <texsyn/color.h>
+#include <texsyn/error_text.h>
+#include <texsyn/feature_scale.h>
+#include <texsyn/fft.h>
+#include <texsyn/fill.h>
+#include <texsyn/histogram.h>
+#include <texsyn/homogeneity.h>
+#include <texsyn/image.h>
+#include <texsyn/inputs.h>
+#include <texsyn/io.h>
+#include <texsyn/material.h>
+#include <texsyn/memory.h>
+#include <texsyn/methods.h>
 #include <texsyn/mix.h>
 #include <texsyn/neighborhood.h>
+#include <texsyn/options.h>
 #include <texsyn/patch.h>
+#include <texsyn/pyramid.h>
 #include <texsyn/pyramid_synthesis.h>
+#include <texsyn/random.h>
+#include <texsyn/recipe.h>
+#include <texsyn/search.h>
 #include <texsyn/solid.h>
+#include <texsyn/source_map.h>
+#include <texsyn/stats.h>
+#include <texsyn/stop.h>
+#include <texsyn/subbands.h>
+#include <texsyn/surface.h>
 #include <texsyn/transfer.h>
 #include <texsyn/version.h>
+#include <texsyn/volume.h>
