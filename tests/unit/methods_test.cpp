@@ -5,9 +5,11 @@
 #include <texsyn/choosy.h>
 #include <texsyn/methods.h>
 #include <texsyn/pyramid_synthesis.h>
+#include <texsyn/surface.h>
 
 #include <filesystem>
 #include <set>
+#include <thread>
 
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -243,42 +245,103 @@ TEST(Methods, RowsGiveWhatTheySay)
     EXPECT_EQ(result.image.spec().get_string_attribute("synth:sample"), "rust.png");
 }
 
-// A stop flag (stop.h) ends every synthesis at its next step: set from the first progress
-// report, the run fails with "…: stopped" (the method's function names itself) and reports
-// nothing more. Set before the run, it never reports progress at all.
-TEST(Methods, AStopFlagEndsEveryRunAtItsNextStep)
+namespace {
+
+// One run of a row for the generic tests below: its options and how many copies of the
+// test image it takes.
+struct Case {
+    const char* method;
+    std::string options;
+    int inputs;
+};
+
+// Every row that synthesizes, with options that run in well under a second.
+std::vector<Case> synthesis_cases()
 {
-    const OIIO::ImageBuf image = grey_image(96, 96);
-    OIIO::ImageBuf mask(OIIO::ImageSpec(96, 96, 1, OIIO::TypeFloat));
-    const float one = 1.0f;
-    OIIO::ImageBufAlgo::fill(mask, &one, OIIO::ROI(40, 56, 40, 56));
-    struct Case {
-        const char* method;
-        const char* options;
-        int inputs;
-    };
-    const Case cases[] = {
+    return {
         { "pyramid", "size=64x64:iterations=3", 1 },
         { "solid", "size=16x16x16:iterations=2", 1 },
         { "mix", "size=64x64:iterations=2:palette=0:pattern=1", 2 },
         { "transfer", "iterations=2", 2 },
         { "neighborhood", "size=48x48:levels=2", 1 },
         { "choosy", "size=48x48:levels=2", 1 },
+        { "choosy-surface",
+            "mesh=" + std::string(TEXSYN_TEST_DATA) + "/../meshes/sphere.obj:levels=2:remesh=0",
+            1 },
         { "patch", "size=96x96", 1 },
         { "fill", "mask=hole.exr:patch=7,5", 1 },
         { "tileable", "patch=7,5", 1 },
         { "cascade", "size=64x64", 0 },
     };
-    for (const Case& c : cases) {
-        SCOPED_TRACE(c.method);
-        const Method& method = *find_method(c.method);
-        MethodOptions options = method.defaults();
-        std::string error;
-        ASSERT_TRUE(options.apply(c.options, error)) << error;
-        std::vector<MethodInput> inputs(size_t(c.inputs), { &image, nullptr, "s.png" });
-        OptionImages files;
+}
+
+// The rows the generic run tests leave out, and why: they measure or describe a sample
+// rather than synthesize (no progress to stop, nothing to compare), or only hand their maps
+// to the copying method after them.
+const std::set<std::string> kNotSyntheses = { "analyze", "check", "material" };
+
+// What running a case needs: its inputs and option images (fill's mask: a square hole).
+struct CaseRun {
+    OIIO::ImageBuf image = grey_image(96, 96);
+    OptionImages files;
+    std::vector<MethodInput> inputs;
+    MethodOptions options;
+
+    bool prepare(const Case& c, std::string& error)
+    {
+        OIIO::ImageBuf mask(OIIO::ImageSpec(96, 96, 1, OIIO::TypeFloat));
+        const float one = 1.0f;
+        OIIO::ImageBufAlgo::fill(mask, &one, OIIO::ROI(40, 56, 40, 56));
         if (std::string(c.method) == "fill")
             files["mask"] = mask;
+        inputs.assign(size_t(c.inputs), { &image, nullptr, "s.png" });
+        options = find_method(c.method)->defaults();
+        return options.apply(c.options, error);
+    }
+};
+
+// A run's result as bits: its image's pixels, or its surface's face colours.
+std::string result_bits(const MethodResult& result)
+{
+    if (result.surface) {
+        std::string bits;
+        for (const std::vector<float>& channel : result.surface->colours)
+            bits.append(
+                reinterpret_cast<const char*>(channel.data()), channel.size() * sizeof(float));
+        return bits;
+    }
+    std::vector<float> pixels(
+        size_t(result.image.spec().image_pixels()) * size_t(result.image.nchannels()));
+    result.image.get_pixels(OIIO::ROI::All(), OIIO::TypeFloat, pixels.data());
+    return std::string(reinterpret_cast<const char*>(pixels.data()), pixels.size() * sizeof(float));
+}
+
+} // namespace
+
+// The generic run tests below cover every row of the registry: a new row fails here until
+// it has a case (or a reason to be left out).
+TEST(Methods, EveryRowHasARunCase)
+{
+    std::set<std::string> covered(kNotSyntheses);
+    for (const Case& c : synthesis_cases()) {
+        ASSERT_NE(find_method(c.method), nullptr) << c.method;
+        covered.insert(c.method);
+    }
+    for (const Method* m : methods())
+        EXPECT_TRUE(covered.count(m->name)) << m->name << " has no case in synthesis_cases()";
+}
+
+// A stop flag (stop.h) ends every synthesis at its next step: set from the first progress
+// report, the run fails with "…: stopped" (the method's function names itself) and reports
+// nothing more. Set before the run, it never reports progress at all.
+TEST(Methods, AStopFlagEndsEveryRunAtItsNextStep)
+{
+    for (const Case& c : synthesis_cases()) {
+        SCOPED_TRACE(c.method);
+        const Method& method = *find_method(c.method);
+        CaseRun run;
+        std::string error;
+        ASSERT_TRUE(run.prepare(c, error)) << error;
 
         StopFlag stop { false };
         int reports = 0;
@@ -289,18 +352,53 @@ TEST(Methods, AStopFlagEndsEveryRunAtItsNextStep)
             stop = true;
         };
         MethodResult result;
-        EXPECT_FALSE(run_method(method, options, inputs, files, settings, result, error));
+        EXPECT_FALSE(
+            run_method(method, run.options, run.inputs, run.files, settings, result, error));
         EXPECT_TRUE(ends_with(error, ": stopped")) << error;
         EXPECT_EQ(reports, 1);
 
         reports = 0;
-        EXPECT_FALSE(run_method(method, options, inputs, files, settings, result, error));
+        EXPECT_FALSE(
+            run_method(method, run.options, run.inputs, run.files, settings, result, error));
         EXPECT_TRUE(ends_with(error, ": stopped")) << error;
         EXPECT_EQ(reports, 0);
 
         // Unset, the same run completes.
         stop = false;
         settings.progress = {};
-        EXPECT_TRUE(run_method(method, options, inputs, files, settings, result, error)) << error;
+        EXPECT_TRUE(run_method(method, run.options, run.inputs, run.files, settings, result, error))
+            << error;
     }
+}
+
+// Runs of different methods in one process, at once on their own threads, give the bits
+// each gives run alone: no method keeps state another run can see.
+TEST(Methods, ConcurrentRunsGiveTheBitsOfRunsAlone)
+{
+    const std::vector<Case> cases = synthesis_cases();
+    std::vector<CaseRun> runs(cases.size());
+    std::vector<std::string> alone(cases.size()), together(cases.size()), errors(cases.size());
+    for (size_t i = 0; i < cases.size(); ++i) {
+        ASSERT_TRUE(runs[i].prepare(cases[i], errors[i])) << errors[i];
+        MethodResult result;
+        ASSERT_TRUE(run_method(*find_method(cases[i].method), runs[i].options, runs[i].inputs,
+            runs[i].files, {}, result, errors[i]))
+            << cases[i].method << ": " << errors[i];
+        alone[i] = result_bits(result);
+        ASSERT_FALSE(alone[i].empty()) << cases[i].method;
+    }
+    std::vector<std::thread> threads;
+    for (size_t i = 0; i < cases.size(); ++i)
+        threads.emplace_back([&, i] {
+            MethodResult result;
+            RunSettings settings;
+            settings.nthreads = 1;
+            if (run_method(*find_method(cases[i].method), runs[i].options, runs[i].inputs,
+                    runs[i].files, settings, result, errors[i]))
+                together[i] = result_bits(result);
+        });
+    for (std::thread& t : threads)
+        t.join();
+    for (size_t i = 0; i < cases.size(); ++i)
+        EXPECT_TRUE(together[i] == alone[i]) << cases[i].method << " " << errors[i];
 }
