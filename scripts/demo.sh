@@ -4,7 +4,8 @@
 # from the bundled rust sample with the bundled OCIO config.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+# Only what the demo runs: the library, the tool and the OIIO plugin (not the test programs).
+TEXSYN_BUILD_TARGETS="texsyn_cli texsyn_imageio" bash scripts/build.sh
 mkdir -p demo-output
 unset OCIO  # the demo uses texsyn's bundled config
 build/oiiotool-ext/texsyn -v --seed 1 data/samples/rust.png \
