@@ -367,7 +367,7 @@ TEST_F(Plugin, RecipeFilesOverAMegabyteAreRefusedFromTheirSize)
 {
     write("huge.texsyn", "");
     fs::resize_file(dir / "huge.texsyn", uintmax_t(2) << 20);
-    for (const std::string cmd : { "'" + texsyn_exe + "' huge.texsyn -o x.exr",
+    for (const std::string& cmd : { "'" + texsyn_exe + "' huge.texsyn -o x.exr",
              std::string("timeout 60 maketx huge.texsyn -o x.exr") }) {
         const ToolRun r = sh(cmd);
         EXPECT_EQ(r.status, 1) << cmd << ": " << r.out;
@@ -398,7 +398,7 @@ TEST_F(Plugin, NestedRecipesAreBoundedBeforeAnyWork)
     const std::string message = "level4.texsyn: would be synthesis 65 of one recipe, which may "
                                 "run at most 64 with the recipes it nests "
                                 "($TEXSYN_MAX_RECIPE_SYNTHESES raises the limit)";
-    for (const std::string cmd : { std::string("timeout 60 iinfo --stats level0.texsyn"),
+    for (const std::string& cmd : { std::string("timeout 60 iinfo --stats level0.texsyn"),
              std::string("timeout 60 oiiotool level0.texsyn -o x.exr"),
              std::string("timeout 60 maketx level0.texsyn -o x.exr"),
              "timeout 60 '" + texsyn_exe + "' level0.texsyn -o x.exr" }) {
@@ -451,7 +451,7 @@ TEST_F(Plugin, MeshesNamingFifosDoNotBlockTheHosts)
     write("bake.texsyn",
         R"({ "sample": "s.png", "method": "choosy-surface", "mesh": "torus.obj", "levels": 2,)"
         R"( "bake": "32x32" })");
-    for (const std::string cmd : { "timeout 120 iinfo --stats bake.texsyn",
+    for (const std::string& cmd : { "timeout 120 iinfo --stats bake.texsyn",
              "timeout 120 oiiotool bake.texsyn -o a.exr", "timeout 120 maketx bake.texsyn -o a.tx",
              "timeout 120 /usr/bin/python3 -c \"import OpenImageIO as o; "
              "b = o.ImageBuf('bake.texsyn'); print(b.read(), b.spec().width)\"" }) {
