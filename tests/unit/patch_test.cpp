@@ -385,10 +385,11 @@ TEST(PatchOptions, ADefaultScheduleFollowsFewerLevels)
 }
 
 // A small sample whose features are half its side (paper crinkles, 128 px) gets 4
-// automatic levels, and one fewer is tried on the output (256 px: at most twice the
-// sample); the schedule kept is the one whose result the tests' own, independent structure
-// measure also finds nearer the sample (within 10%), its output is that schedule's exactly,
-// and -v says so. Given levels, or a repeating sample, are not second-guessed.
+// automatic levels, and one fewer is tried on the output (256 px: twice the sample, the
+// largest trial). The schedule kept is the one whose result the tests' own,
+// independent structure measure also finds nearer the sample (within 10%), its output is
+// that schedule's exactly, and -v says so. Given levels, or a repeating sample, are not
+// second-guessed.
 TEST(PatchSynthesize, ASmallSampleKeepsTheNearerOfTwoLevelCounts)
 {
     const OIIO::ImageBuf sample = linear_sample("paper_crinkled.png");

@@ -26,6 +26,9 @@ using detail::SampleLevel;
 
 // The random search's first radius below the coarsest level.
 constexpr int kFineRadius = 8;
+// The trial that chooses between level counts (chosen_copies) is this many times the
+// sample's size: enough output for the layouts to differ as they will in the result.
+constexpr double kTrialScale = 2.0;
 
 std::string size_text(int w, int h)
 {
@@ -294,9 +297,9 @@ Copied copied(const Copies& copies, const PlanarImage& in, int w, int h)
 // The copies of the synthesis with opt's schedule, or, where the automatic levels could as
 // well be one fewer (patch_schedule_pvt.h: alternative_levels), of whichever of the two
 // arranges the sample's features nearer the way the sample does: both run on a trial
-// output (the output itself when it is at most twice the sample's size, else that size),
-// compared by structure_distance; `schedule` then says which was kept and why, and `opt`
-// holds the kept levels and iterations.
+// output (kTrialScale times the sample's size, or the output itself where that is
+// smaller), compared by structure_distance; `schedule` then says which was kept and why,
+// and `opt` holds the kept levels and iterations.
 Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
     const FeatureScale& scale, bool automatic_levels, PatchOptions& opt, std::string& schedule)
 {
@@ -304,8 +307,8 @@ Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
     const int fewer
         = automatic_levels ? detail::alternative_levels(std::min(sw, sh), scale, opt.levels) : 0;
     PatchOptions deeper = opt;
-    deeper.width = std::min(opt.width, 2 * sw);
-    deeper.height = std::min(opt.height, 2 * sh);
+    deeper.width = std::min(opt.width, int(kTrialScale * sw));
+    deeper.height = std::min(opt.height, int(kTrialScale * sh));
     if (fewer == 0
         || levels_that_fit(sw, sh, deeper.width, deeper.height, opt.levels, opt) < opt.levels)
         return optimize(planes, sw, sh, opt, 0.0, 1.0);
