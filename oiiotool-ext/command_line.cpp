@@ -100,14 +100,7 @@ struct PlannedItem {
 // "--neighborhood, --choosy and --patch": the commands that synthesize material sets.
 std::string material_takers()
 {
-    std::vector<std::string> names;
-    for (const Method* m : methods())
-        if (synthesizes_materials(*m))
-            names.push_back("--" + m->name);
-    std::string s;
-    for (size_t i = 0; i < names.size(); ++i)
-        s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
-    return s;
+    return command_list([](const Method& m) { return synthesizes_materials(m); });
 }
 
 // The maps --material's options make: the albedo, then every map whose file is given (in
@@ -133,14 +126,8 @@ std::string map_filename(const std::string& pattern, const std::string& map)
 // "--pyramid, --mix and --transfer": the commands that take analyses.
 std::string analysis_takers()
 {
-    std::vector<std::string> names;
-    for (const Method* m : methods())
-        if (m->accepts_analysis(0) || m->accepts_analysis(1))
-            names.push_back("--" + m->name);
-    std::string s;
-    for (size_t i = 0; i < names.size(); ++i)
-        s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
-    return s;
+    return command_list(
+        [](const Method& m) { return m.accepts_analysis(0) || m.accepts_analysis(1); });
 }
 
 // The items command `name` of row `m` pops must be of a kind it takes.

@@ -126,19 +126,11 @@ void print_help()
                 "prints one with an example):\n");
     for (const Method* m : methods())
         print_method(*m);
-    std::printf("\n"
-                "Examples:\n"
-                "    texsyn rust.png --pyramid:size=1024x1024:iterations=5:orientations=4 -o "
-                "rust_big.exr\n"
-                "    texsyn rust.png --check\n"
-                "    texsyn marble.png --solid:size=128x128x128 -o marble.vdb\n"
-                "    texsyn rust.png paper.png --mix:palette=0:pattern=1 -o mix.exr\n"
-                "    texsyn photo.png rust.png --transfer -o rusty_photo.exr\n"
-                "    texsyn grass.png --neighborhood:size=512x512:map=coords.exr -o grass_big.exr\n"
-                "    texsyn stone.png --choosy:size=512x512:iterations=1,8 -o stone_big.exr\n"
-                "    texsyn bricks.png --patch:size=1024x1024:map=coords.exr -o bricks_big.exr\n"
-                "    texsyn --apply-map coords.exr grass_height.png -o grass_height_big.exr\n"
-                "    texsyn --cascade:size=512x512:levels=4:r=3.9 -o cascade.exr\n");
+    // One example per command, from its row, and the one command that is not a method.
+    std::printf("\nExamples:\n");
+    for (const Method* m : methods())
+        std::printf("    %s\n", m->example.c_str());
+    std::printf("    texsyn --apply-map coords.exr grass_height.png -o grass_height_big.exr\n");
 }
 
 const Method& method_for_help(const std::string& topic)

@@ -435,8 +435,8 @@ void read_inputs(Call& call, py::tuple args)
         } else if (py::isinstance<PyMaterial>(g) || py::isinstance<py::dict>(g)) {
             if (!synthesizes_materials(m) || given.size() != 1)
                 raise_error(ErrorKind::Value,
-                    call.function + ": a material set is synthesized by the copying methods "
-                        + "(neighborhood, choosy, patch) and fill, one set at a time");
+                    call.function + ": a material set is synthesized by the copying methods ("
+                        + command_list(synthesizes_materials, "", "") + "), one set at a time");
             in.material = py::isinstance<PyMaterial>(g)
                 ? std::make_shared<PyMaterial>(g.cast<PyMaterial>())
                 : nullptr; // a dict: made once the keywords are read

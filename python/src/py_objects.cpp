@@ -7,6 +7,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <texsyn/methods.h>
+
 #include "py_errors.h"
 #include "py_run.h"
 
@@ -97,11 +99,13 @@ void register_objects(py::module_& m)
                 + std::to_string(a.stats->sample_height) + ">";
         });
 
-    py::class_<PyMaterial>(m, "Material",
-        "A material set: an albedo and its other maps (normal, height, roughness, ...), as\n"
-        "texsyn.material() makes it. A copying method (neighborhood, choosy, patch) given a\n"
-        "Material synthesizes every map together and returns a dict of maps with its source\n"
-        "map.")
+    static const std::string material_doc
+        = "A material set: an albedo and its other maps (normal, height, roughness, ...), as\n"
+          "texsyn.material() makes it. A method that copies pixels, given a Material,\n"
+          "synthesizes every map together and returns a dict of maps with its source map.\n"
+          "The methods that take one: "
+        + command_list(synthesizes_materials, "", "") + ".";
+    py::class_<PyMaterial>(m, "Material", material_doc.c_str())
         .def_property_readonly("maps", &PyMaterial::maps,
             "The maps by name, the albedo first, each given back as it was given.")
         .def_property_readonly("names",

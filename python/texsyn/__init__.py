@@ -53,7 +53,8 @@ _RETURNS = {
     "analysis": "a texsyn.Analysis (its .save(path) writes the .tsa file)",
     "report": "the report, as text",
     "mesh": "a texsyn.Surface (vertices, faces, per-face colours, UV bakes, write_ply())",
-    "material": "a texsyn.Material, for a copying method (neighborhood, choosy, patch)",
+    "material": "a texsyn.Material, for a copying method ("
+                + ", ".join(r["name"] for r in _texsyn._method_table() if r["materials"]) + ")",
 }
 
 

@@ -130,7 +130,8 @@ def test_input_counts(stucco):
     refuses(lambda: texsyn.pyramid(stucco, stucco), ValueError, "takes 1 input, got 2")
     refuses(lambda: texsyn.mix("a.png"), ValueError, "texsyn.mix: expected one list of samples")
     refuses(lambda: texsyn.pyramid({"albedo": stucco}), ValueError,
-            "a material set is synthesized by the copying methods")
+            "a material set is synthesized by the copying methods (neighborhood, choosy, "
+            "patch and fill), one set at a time")
 
 
 @pytest.mark.parametrize("value, what", [(np.nan, "is NaN"), (np.inf, "is infinite"),

@@ -3,6 +3,7 @@
 // through one path with one message shape, and run_method checks what every front end
 // hands it.
 #include <texsyn/choosy.h>
+#include <texsyn/material.h>
 #include <texsyn/methods.h>
 #include <texsyn/pyramid_synthesis.h>
 #include <texsyn/surface.h>
@@ -205,6 +206,18 @@ TEST(Methods, RunMethodChecksWhatItIsGiven)
     files["dilation"] = grey_image(8, 8);
     EXPECT_FALSE(run_method(cascade, controlled, {}, files, {}, result, error));
     EXPECT_EQ(error, "dilation=ctrl.exr : the control image has 3 channels; expected 1");
+}
+
+// Messages list commands from the rows: those that copy pixels write source maps (cascade's
+// map= is a parameter, not a file it writes), and the list reads as a sentence.
+TEST(Methods, CommandListsComeFromTheRows)
+{
+    EXPECT_EQ(command_list(writes_source_map, ":map="),
+        "--neighborhood:map=, --choosy:map=, --patch:map= and --fill:map=");
+    EXPECT_EQ(command_list(synthesizes_materials, "", ""), "neighborhood, choosy, patch and fill");
+    EXPECT_FALSE(writes_source_map(*find_method("cascade")));
+    EXPECT_EQ(command_list([](const Method& m) { return m.name == "check"; }), "--check");
+    EXPECT_EQ(command_list([](const Method&) { return false; }), "");
 }
 
 // Each row's output kind: a volume is a 3-D image, an analysis its statistics, a report

@@ -314,6 +314,15 @@ const Method* find_method(std::string_view name);
 /// "a|b|c": the names of the rows that make recipes (all rows with `all`).
 std::string method_names(bool all = false);
 
+/// "--a, --b and --c" (each name after `prefix` and before `suffix`): the rows `which`
+/// selects, in --help's order, as messages list them; "" if none.
+std::string command_list(const std::function<bool(const Method&)>& which,
+    const std::string& suffix = "", const std::string& prefix = "--");
+
+/// Whether `method` writes a source map (an output-file option `map` of kind Write): the
+/// rows that copy sample pixels.
+bool writes_source_map(const Method& method);
+
 /// The layout of `method`'s result (a row that makes images or volumes) for `options` and
 /// inputs with these layouts: the row's rule, or the usual one. Fails (false, `error`) if
 /// the options do not validate, the input count is wrong, or the rule refuses.

@@ -110,6 +110,25 @@ const Method* find_method(std::string_view name)
     return nullptr;
 }
 
+std::string command_list(const std::function<bool(const Method&)>& which, const std::string& suffix,
+    const std::string& prefix)
+{
+    std::vector<std::string> names;
+    for (const Method* m : methods())
+        if (which(*m))
+            names.push_back(prefix + m->name + suffix);
+    std::string list;
+    for (size_t i = 0; i < names.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return list;
+}
+
+bool writes_source_map(const Method& method)
+{
+    const OptionField* map = method.defaults().table().find("map");
+    return map && map->file == FileUse::Write;
+}
+
 std::string method_names(bool all)
 {
     std::string names;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // apply_source_map: one synthesis drives every map of a material.
 #include <texsyn/image.h>
+#include <texsyn/methods.h>
 #include <texsyn/source_map.h>
 
 #include <algorithm>
@@ -106,12 +107,12 @@ bool apply(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf&
         ? 2 + int(turned)
         : -1;
     if (ms.nchannels != 2 + int(turned) + int(blend_channel >= 0) || ms.depth > 1) {
-        dst.errorfmt("the source map has {}; expected the channels x, y (and t, m) that "
-                     "--neighborhood:map=, --choosy:map=, --patch:map= and --fill:map= write",
+        dst.errorfmt("the source map has {}; expected the channels x, y (and t, m) that {} write",
             ms.depth > 1            ? "depth " + std::to_string(ms.depth)
                 : ms.nchannels == 3 ? "the channels " + std::string(ms.channel_name(0)) + ", "
                     + std::string(ms.channel_name(1)) + ", " + std::string(ms.channel_name(2))
-                                    : detail::count_text(ms.nchannels, "channel"));
+                                    : detail::count_text(ms.nchannels, "channel"),
+            command_list(writes_source_map, ":map="));
         return false;
     }
     // A map of a scale= synthesis: an image of the sample's own size is resampled as the
