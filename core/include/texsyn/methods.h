@@ -29,14 +29,14 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/options.h>
-#include <texsyn/stats.h>
 #include <texsyn/stop.h>
 #include <texsyn/subbands.h>
 
 namespace texsyn {
 
-struct SurfaceTexture; // texsyn/surface.h
-struct Material;       // texsyn/material.h
+struct SurfaceTexture;    // texsyn/surface.h
+struct TextureStatistics; // texsyn/stats.h: an analysis, opaque to the registry
+struct Material;          // texsyn/material.h
 
 /// A method's options, whatever the method: its options struct together with that struct's
 /// option table. Value semantics (copies are deep).

@@ -11,6 +11,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <texsyn/homogeneity.h>
+#include <texsyn/stats.h>
 
 #include "result_layout_pvt.h"
 
