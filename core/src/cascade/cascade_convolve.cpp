@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 
 namespace {
@@ -63,7 +65,7 @@ void convolve_circular(const Plane& in, const CascadeKernelWeights& k, Plane& ou
                 }
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
 }
 
 void convolve_warped(const Plane& in, const CascadeKernelWeights& k, const Plane& dilation,
@@ -93,7 +95,7 @@ void convolve_warped(const Plane& in, const CascadeKernelWeights& k, const Plane
                 }
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
 }
 
 } // namespace texsyn::detail

@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 
 namespace {
@@ -67,7 +69,7 @@ void apply_cascade_map(
                     row[x] = cascade_map_value(map, r, curve, row[x]);
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
 }
 
 } // namespace texsyn::detail

@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 
 namespace {
@@ -74,7 +76,7 @@ Plane resample_circular(const Plane& in, int width, int height, int nthreads)
                 }
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     OIIO::parallel_for_range(
         int64_t(0), int64_t(height),
         [&](int64_t begin, int64_t end) {
@@ -90,7 +92,7 @@ Plane resample_circular(const Plane& in, int width, int height, int nthreads)
                 }
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     return out;
 }
 

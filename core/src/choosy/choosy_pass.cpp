@@ -8,6 +8,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include <texsyn/random.h>
 
 #include "methods/method_helpers_pvt.h"
@@ -76,7 +78,7 @@ void choosy_pass(ChoosyTarget& target, ChoiceIndex& index, const PassSettings& s
                     queries.data() + size_t(i) * dim, masks.data() + size_t(i) * dim,
                     hints.data() + size_t(i) * target.max_neighbors());
             },
-            OIIO::paropt(settings.nthreads).minitems(1));
+            detail::split_every_item(settings.nthreads));
         for (size_t i = 0; i < m; ++i) {
             const size_t site = order[start + i];
             // An earlier visit of this round changed a neighbour, or used the same sample

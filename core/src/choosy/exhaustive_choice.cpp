@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include "search/distance_pvt.h"
 
 namespace texsyn::detail {
@@ -44,17 +46,6 @@ uint32_t least_score_point(size_t count, uint32_t orientations, const UseCounts&
     return best_point;
 }
 
-// Sum over the kBlock components of one block of (mask[i] (a[i] - b[i]))^2, added to the
-// lanes.
-inline void accumulate_masked(const float* a, const float* b, const float* mask, float* acc)
-{
-    for (int i = 0; i < MaskedChoice::kBlock; i += 8)
-        for (int l = 0; l < 8; ++l) {
-            const float d = (a[i + l] - b[i + l]) * mask[i + l];
-            acc[l] += d * d;
-        }
-}
-
 class ExhaustiveChoice final : public ChoiceIndex {
 public:
     ExhaustiveChoice(const AnalysisPoints& points, float penalty, int nthreads)
@@ -73,7 +64,7 @@ public:
                 for (size_t p = size_t(b) * kFillBlock; p < end; ++p)
                     points.vector(p, m_vectors.data() + p * size_t(m_dim));
             },
-            OIIO::paropt(nthreads).minitems(1));
+            detail::split_every_item(nthreads));
     }
 
     uint32_t choose(const float* query, const uint32_t* hints, size_t nhints) const override
@@ -132,12 +123,12 @@ uint32_t MaskedChoice::choose(const UseCounts& counts, const float* query, const
     // Checked after every block: exact, as distance2_below.
     return least_score_point(
         count, uint32_t(m_points.orientations), counts, hints, nhints, [&](size_t p, float bound) {
-            float acc[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+            SquaredDifferenceLanes lanes;
             float partial = 0.0f;
             for (size_t b = 0; b < blocks; ++b) {
-                accumulate_masked(q.data() + b * kBlock, data + b * stride + p * kBlock,
-                    m.data() + b * kBlock, acc);
-                partial = sum_lanes(acc);
+                lanes.add_masked(q.data() + b * kBlock, data + b * stride + p * kBlock,
+                    m.data() + b * kBlock, int(kBlock));
+                partial = lanes.sum();
                 if (partial >= bound)
                     break;
             }

@@ -8,6 +8,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include "dynamic_kdtree_pvt.h"
 #include "search/distance_pvt.h"
 #include "search/pca_pvt.h"
@@ -73,7 +75,7 @@ public:
                     m_pca.project(full.data(), m_reduced.data() + p * rd);
                 }
             },
-            OIIO::paropt(nthreads).minitems(1));
+            detail::split_every_item(nthreads));
         reset();
     }
 
@@ -165,7 +167,7 @@ public:
                 if (!arriving[size_t(c)].empty())
                     m_trees[size_t(c)].insert(arriving[size_t(c)], live(uint32_t(c)));
             },
-            OIIO::paropt(m_nthreads).minitems(1));
+            detail::split_every_item(m_nthreads));
     }
 
     void reset() override

@@ -9,6 +9,8 @@
 #include <Eigen/Dense>
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn {
 
 namespace {
@@ -55,7 +57,7 @@ void apply_affine(PlanarImage& image, int n, const std::vector<double>& m,
                     ch[size_t(c)][i] = float(y[size_t(c)]);
             }
         },
-        OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+        detail::split_every_item(nthreads));
 }
 
 } // namespace

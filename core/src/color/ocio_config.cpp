@@ -17,6 +17,8 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/parallel.h>
+
+#include "image/parallel_pvt.h"
 #include <OpenImageIO/strutil.h>
 
 #include "lut_files_pvt.h"
@@ -221,7 +223,7 @@ std::string for_row_blocks(
                     error = e.what();
             }
         },
-        OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+        detail::split_every_item(nthreads));
     return error;
 }
 

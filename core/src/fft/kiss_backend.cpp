@@ -19,18 +19,13 @@
 #include <dlfcn.h>
 #include <kiss_fft.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn {
 namespace {
 
 using Cpx = std::complex<float>;
 static_assert(sizeof(kiss_fft_cpx) == sizeof(Cpx), "kiss_fft_cpx must be two floats");
-
-// Each item (a row pair, a column block) is a whole FFT: split down to single items,
-// rather than OIIO's default minimum of 1024 items per task.
-OIIO::paropt fft_paropt(int nthreads)
-{
-    return OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1);
-}
 
 // Columns per gather block: 16 complex values are two cache lines of each row.
 constexpr int64_t column_block = 16;
@@ -340,7 +335,7 @@ private:
                 for (int64_t p = begin; p < end; ++p)
                     f(2 * p, 2 * p + 1 < h, z, z + w);
             },
-            fft_paropt(nthreads));
+            detail::split_every_item(nthreads));
     }
 
     // Complex FFT of every column of a half spectrum; src may equal dst (each block reads
@@ -371,7 +366,7 @@ private:
                     }
                 }
             },
-            fft_paropt(nthreads));
+            detail::split_every_item(nthreads));
     }
 
     KissCfg m_row_fwd, m_row_inv, m_col_fwd, m_col_inv;

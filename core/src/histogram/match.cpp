@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include "histogram_pvt.h"
 
 namespace texsyn {
@@ -27,11 +29,6 @@ namespace {
 // Work is split into fixed chunks (never by thread count), so results are identical at
 // any nthreads.
 constexpr int64_t kChunk = int64_t(1) << 16;
-
-OIIO::paropt chunk_opt(int nthreads)
-{
-    return OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1);
-}
 
 void match_exact(Plane& plane, const QuantileTable& target, int nthreads)
 {
@@ -60,7 +57,7 @@ Cdf cdf_at_edges(const float* v, size_t n, double lo, double width, int nthreads
             for (int64_t i = begin; i < end; ++i)
                 ++c[bin_of(v[i], lo, width)];
         },
-        chunk_opt(nthreads));
+        detail::split_every_item(nthreads));
     Cdf cdf;
     cdf[0] = 0.0;
     size_t cum = 0;
@@ -119,7 +116,7 @@ void match_bins256(Plane& plane, const QuantileTable& target, int nthreads)
                 v[i] = float(lut[k] + f * (lut[k + 1] - lut[k]));
             }
         },
-        chunk_opt(nthreads));
+        detail::split_every_item(nthreads));
 }
 
 } // namespace

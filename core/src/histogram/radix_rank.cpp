@@ -9,6 +9,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn {
 namespace histogram_pvt {
 namespace {
@@ -67,7 +69,7 @@ void count_digits(const float* values, size_t n, Histograms& total, int nthreads
                     ++h[p * kBuckets + digit(key, p)];
             }
         },
-        OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+        detail::split_every_item(nthreads));
     total.fill(0);
     for (const Histograms& h : chunk_hist)
         for (size_t j = 0; j < total.size(); ++j)

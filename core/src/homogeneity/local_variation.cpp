@@ -8,6 +8,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::homogeneity {
 
 namespace {
@@ -82,7 +84,7 @@ void measure_local_variation(const PlanarImage& image, HomogeneityReport& report
                 }
             }
         },
-        OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+        detail::split_every_item(nthreads));
     report.local_mean_variation = coefficient_of_variation(means);
     report.local_contrast_variation = coefficient_of_variation(contrasts);
 }
@@ -124,7 +126,7 @@ void measure_lighting(const PlanarImage& image, HomogeneityReport& report, int n
                         }
                 }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     double mean = 0.0;
     for (double v : measured)
         mean += v;

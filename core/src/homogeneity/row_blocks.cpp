@@ -5,6 +5,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::homogeneity {
 
 int for_each_row_block(int height, int nthreads, const std::function<void(int, int, int)>& fn)
@@ -18,7 +20,7 @@ int for_each_row_block(int height, int nthreads, const std::function<void(int, i
                 fn(int(b), y0, std::min(height, y0 + rows_per_block));
             }
         },
-        OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+        detail::split_every_item(nthreads));
     return nblocks;
 }
 

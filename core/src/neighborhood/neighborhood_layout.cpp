@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 
 NeighborhoodLayout make_layout(int n, int coarse, bool has_coarser, NeighborhoodShape shape)
@@ -81,7 +83,7 @@ SampleVectors sample_vectors(const NeighborhoodLayout& layout, const CandidateGr
                     vectors.data() + index * dim);
             }
         },
-        OIIO::paropt(nthreads).minitems(1));
+        detail::split_every_item(nthreads));
     return vectors;
 }
 

@@ -9,6 +9,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include "search/kdtree_pvt.h"
 
 namespace texsyn::detail {
@@ -44,7 +46,7 @@ std::vector<uint32_t> similar_patches(const PixelImage& sample, int cell_width, 
                 for (int t = 0; t < side; ++t, v += c)
                     std::copy_n(sample.pixel(cx - half + 2 * t, cy - half + 2 * r), c, v);
         },
-        OIIO::paropt(nthreads).minitems(1024));
+        detail::split_every_item(nthreads));
     const VectorSet set { vectors.data(), count, dim };
     const KdTreeIndex index(set, kReducedDims, nthreads);
 

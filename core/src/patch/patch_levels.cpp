@@ -5,6 +5,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 
 PixelImage interleave_padded(const std::vector<Plane>& planes, int pad, int nthreads, Wrap wrap)
@@ -28,7 +30,7 @@ PixelImage interleave_padded(const std::vector<Plane>& planes, int pad, int nthr
                     row[size_t(x) * size_t(c) + size_t(k)] = planes[size_t(k)](sx, sy);
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     return out;
 }
 

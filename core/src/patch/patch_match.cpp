@@ -10,6 +10,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include <texsyn/random.h>
 
 #include "search/distance_pvt.h"
@@ -30,11 +32,11 @@ inline float distance_at(const PixelImage& padded, int pad, int x, int y, const 
     const float* s = sample.pixel(sx - half, sy - half);
     const size_t ostride = size_t(padded.width) * size_t(c),
                  sstride = size_t(sample.width) * size_t(c);
-    float acc[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+    SquaredDifferenceLanes lanes;
     float sum = 0.0f;
     for (int r = 0; r < patch && sum < bound; ++r, o += ostride, s += sstride) {
-        accumulate_lanes(o, s, 0, patch * c, acc);
-        sum = sum_lanes(acc);
+        lanes.add(o, s, patch * c);
+        sum = lanes.sum();
     }
     return sum;
 }
@@ -132,7 +134,6 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
     const CentreRange range { sw, sample.pixels.height, settings.patch / 2, sample.cell_width };
     const size_t n = size_t(w) * size_t(h);
     const int nblocks = (h + kRowBlock - 1) / kRowBlock;
-    const OIIO::paropt par = OIIO::paropt(settings.nthreads).minitems(1);
     const float inf = std::numeric_limits<float>::infinity();
 
     // The output changed since the field was made: measure every source again.
@@ -150,7 +151,7 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
                         padded, pad, x, y, sample.pixels, field.source[q], settings.patch, inf);
                 }
         },
-        par);
+        detail::split_every_item(settings.nthreads));
 
     // The penalty of a source used `count` times: repetition x the field's mean distance
     // for each use beyond the count an even use of the sample gives each centre, so that
@@ -198,7 +199,7 @@ void patch_match(const SampleLevel& sample, const PixelImage& padded, int pad,
                 for (int y = int(b) * kRowBlock; y < std::min(h, int(b + 1) * kRowBlock); ++y)
                     search_row(context, y);
             },
-            par);
+            detail::split_every_item(settings.nthreads));
         std::swap(field.source, next.source);
         std::swap(field.distance, next.distance);
     }

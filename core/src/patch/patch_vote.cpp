@@ -10,6 +10,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 
 namespace {
@@ -37,6 +39,41 @@ void for_each_vote(
     }
 }
 
+// One row of the field's votes onto one row of accumulators: add(x0, x1, offset, shift)
+// adds to pixels x in [x0, x1) the vote of the patch centred at field pixel x + offset,
+// its source moved by `shift` (that patch's pixel over x), weighted by the centre's weight.
+struct VoteRow {
+    const uint32_t* source;
+    const float* weight;
+    const float* pixels;
+    float* acc;
+    float* total;
+    int channels;
+
+    template <int C>
+    void add_channels(int x0, int x1, int offset, int shift, int c) const
+    {
+        const int n = C > 0 ? C : c;
+        for (int x = x0; x < x1; ++x) {
+            const int q = x + offset;
+            const float* p = pixels + size_t(int(source[q]) + shift) * size_t(n);
+            const float wq = weight[q];
+            float* a = acc + size_t(x) * size_t(n);
+            for (int k = 0; k < n; ++k)
+                a[k] += wq * p[k];
+            total[x] += wq;
+        }
+    }
+
+    void add(int x0, int x1, int offset, int shift) const
+    {
+        if (channels == 3)
+            add_channels<3>(x0, x1, offset, shift, 3);
+        else
+            add_channels<0>(x0, x1, offset, shift, channels);
+    }
+};
+
 } // namespace
 
 void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVote kind,
@@ -57,7 +94,7 @@ void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVo
                 for (size_t q = size_t(y) * size_t(w); q < size_t(y + 1) * size_t(w); ++q)
                     weight[q] = std::pow(field.distance[q] / values + floor, -0.6f);
             },
-            OIIO::paropt(nthreads));
+            detail::split_every_item(nthreads));
     }
     out.assign(size_t(c), Plane(w, h));
     const int half = patch / 2, sw = sample.pixels.width;
@@ -68,37 +105,39 @@ void vote(const SampleLevel& sample, const PatchField& field, int patch, PatchVo
             if (stop_requested(stop))
                 return;
             // Row accumulators, interleaved; offsets outermost so that the inner loop runs
-            // along a row of the field.
+            // along a row of the field. Each pixel adds its votes in the order of the
+            // offsets, whatever the order of the pixels.
             std::vector<float> acc(size_t(w) * size_t(c), 0.0f), total(size_t(w), 0.0f);
             for (int dy = -half; dy <= half; ++dy) {
                 if (!wrapping.y && (int(y) - dy < 0 || int(y) - dy >= h))
                     continue;
-                const uint32_t* src
-                    = field.source.data() + size_t(wrap(int(y) - dy, h)) * size_t(w);
-                const float* wt = weight.data() + size_t(wrap(int(y) - dy, h)) * size_t(w);
+                const size_t row = size_t(wrap(int(y) - dy, h)) * size_t(w);
+                const VoteRow votes { field.source.data() + row, weight.data() + row, pixels,
+                    acc.data(), total.data(), c };
                 for (int dx = -half; dx <= half; ++dx) {
+                    // Output pixel x takes the patch centred at x - dx: without wrap, only
+                    // the pixels whose centre is inside; with it, the centres that run off
+                    // one edge come from the other.
                     const int shift = dy * sw + dx;
-                    // Without wrap, the pixels whose patch centre x - dx is inside.
-                    const int x0 = wrapping.x ? 0 : std::max(0, dx);
-                    const int x1 = wrapping.x ? w : std::min(w, w + dx);
-                    for (int x = x0; x < x1; ++x) {
-                        const int q = wrap(x - dx, w);
-                        const float* p = pixels + size_t(int(src[q]) + shift) * size_t(c);
-                        const float wq = wt[q];
-                        float* a = acc.data() + size_t(x) * size_t(c);
-                        for (int k = 0; k < c; ++k)
-                            a[k] += wq * p[k];
-                        total[size_t(x)] += wq;
-                    }
+                    const int x0 = std::max(0, dx), x1 = std::min(w, w + dx);
+                    if (!wrapping.x)
+                        votes.add(x0, x1, -dx, shift);
+                    else if (std::abs(dx) < w) {
+                        votes.add(0, x0, w - dx, shift);
+                        votes.add(x0, x1, -dx, shift);
+                        votes.add(x1, w, -w - dx, shift);
+                    } else // a patch wider than the field
+                        for (int x = 0; x < w; ++x)
+                            votes.add(x, x + 1, wrap(x - dx, w) - x, shift);
                 }
             }
             for (int k = 0; k < c; ++k) {
-                float* row = out[size_t(k)].row(int(y));
+                float* out_row = out[size_t(k)].row(int(y));
                 for (int x = 0; x < w; ++x)
-                    row[x] = acc[size_t(x) * size_t(c) + size_t(k)] / total[size_t(x)];
+                    out_row[x] = acc[size_t(x) * size_t(c) + size_t(k)] / total[size_t(x)];
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
 }
 
 std::vector<uint32_t> nearest_votes(const SampleLevel& sample, const PatchField& field, int patch,
@@ -131,7 +170,7 @@ std::vector<uint32_t> nearest_votes(const SampleLevel& sample, const PatchField&
                 chosen[size_t(y) * size_t(w) + size_t(x)] = pick;
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     return chosen;
 }
 

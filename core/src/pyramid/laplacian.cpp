@@ -8,6 +8,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include "laplacian_taps_pvt.h"
 
 namespace texsyn {
@@ -28,7 +30,7 @@ void resample(const Plane& in, const Taps& tx, const Taps& ty, Plane& out, int n
             for (int64_t y = begin; y < end; ++y)
                 detail::filter_row(in.row(int(y)), tx, tmp.row(int(y)));
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     if (out.width() != w || out.height() != h)
         out = Plane(w, h);
     OIIO::parallel_for_range(
@@ -37,7 +39,7 @@ void resample(const Plane& in, const Taps& tx, const Taps& ty, Plane& out, int n
             for (int64_t y = begin; y < end; ++y)
                 detail::filter_rows(tmp.data(), size_t(w), ty, int(y), out.row(int(y)));
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
 }
 
 class LaplacianPyramid final : public Pyramid {

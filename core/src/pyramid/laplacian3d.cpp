@@ -8,6 +8,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include "laplacian_taps_pvt.h"
 
 namespace texsyn {
@@ -23,7 +25,6 @@ void resample(
 {
     const int w = tx.size(), h = ty.size(), d = tz.size();
     const int ih = in.height(), id = in.depth();
-    const OIIO::paropt opt(nthreads);
     Volume along_x(w, ih, id);
     OIIO::parallel_for_range(
         int64_t(0), int64_t(ih) * id,
@@ -32,7 +33,7 @@ void resample(
                 detail::filter_row(in.data() + size_t(r) * size_t(in.width()), tx,
                     along_x.data() + size_t(r) * size_t(w));
         },
-        opt);
+        detail::split_every_item(nthreads));
     Volume along_y(w, h, id);
     OIIO::parallel_for_range(
         int64_t(0), int64_t(h) * id,
@@ -43,7 +44,7 @@ void resample(
                     along_x.slab(z), size_t(w), ty, y, along_y.slab(z) + size_t(y) * size_t(w));
             }
         },
-        opt);
+        detail::split_every_item(nthreads));
     if (out.width() != w || out.height() != h || out.depth() != d)
         out = Volume(w, h, d);
     OIIO::parallel_for_range(
@@ -53,7 +54,7 @@ void resample(
                 detail::filter_rows(
                     along_y.data(), size_t(w) * size_t(h), tz, int(z), out.slab(int(z)));
         },
-        opt);
+        detail::split_every_item(nthreads));
 }
 
 class LaplacianPyramid3D final : public VolumePyramid {

@@ -5,6 +5,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn {
 
 void Pyramid::transform_bands(Plane& image, std::vector<Plane>& bands, const BandFunction& modify,
@@ -18,7 +20,7 @@ void Pyramid::transform_bands(Plane& image, std::vector<Plane>& bands, const Ban
             if (!stop_requested(stop))
                 modify(int(b), bands[size_t(b)]);
         },
-        OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+        detail::split_every_item(nthreads));
     if (!stop_requested(stop))
         collapse(bands, image, nthreads);
 }

@@ -16,6 +16,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn {
 namespace {
 
@@ -63,7 +65,7 @@ void for_ranges(size_t n, int nthreads, F&& f)
 {
     OIIO::parallel_for_range(
         int64_t(0), int64_t(n), [&](int64_t b, int64_t e) { f(size_t(b), size_t(e)); },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
 }
 
 class SteerablePyramid final : public Pyramid {
@@ -239,7 +241,7 @@ public:
                 if (!stop_requested(stop))
                     process(int(b));
             },
-            OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+            detail::split_every_item(nthreads));
         if (stop_requested(stop))
             return;
 
@@ -361,10 +363,8 @@ private:
             m_hi0.resize(n);
             m_lo0.resize(n);
         }
-        // Rows are independent; plans are made once per synthesis but hold ~(K+2) masks
-        // of the output's size, so they are worth making in parallel.
-        OIIO::parallel_for(0, lv.h, [&](int64_t row64) {
-            const int row = int(row64);
+        // Serial: make_steerable_pyramid is given no thread count.
+        for (int row = 0; row < lv.h; ++row) {
             for (int kx = 0; kx < wc; ++kx) {
                 double wx, wy;
                 frequency(s, lv.h, kx, row, wx, wy);
@@ -389,7 +389,7 @@ private:
                     m_lo0[i] = float(lowpass_profile(r / 2));
                 }
             }
-        });
+        }
     }
 
     void make_crop(int s)

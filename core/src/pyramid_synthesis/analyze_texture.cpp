@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include <texsyn/homogeneity.h>
 
 namespace texsyn {
@@ -31,7 +33,7 @@ void analyse_component(const Plane& component, const Pyramid& analysis, const Py
     OIIO::parallel_for_chunked(
         int64_t(0), int64_t(bands.size()), int64_t(1),
         [&](int64_t b, int64_t) { stats.bands[size_t(b)] = QuantileTable(bands[size_t(b)]); },
-        OIIO::paropt(opt.nthreads, OIIO::paropt::SplitDir::Y, 1));
+        detail::split_every_item(opt.nthreads));
 }
 
 bool analyse(const OIIO::ImageBuf& sample, const PyramidOptions& opt, TextureStatistics& stats,

@@ -1,58 +1,91 @@
 // SPDX-License-Identifier: Apache-2.0
-// The squared distance every search back-end uses, inline so their inner loops vectorise:
-// eight interleaved partial sums (one SIMD register of lanes), added in a fixed pairwise
-// order. search.h's squared_distance and squared_distance_below are these.
+// The squared distance every search back-end uses, inline so that their inner loops keep
+// the eight interleaved partial sums in registers, added in a fixed pairwise order.
+// search.h's squared_distance and squared_distance_below are these.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
+#include <OpenImageIO/simd.h>
+
 namespace texsyn::detail {
 
-/// The eight lanes of a partial sum, added in a fixed order.
-inline float sum_lanes(const float* acc)
-{
-    return ((acc[0] + acc[4]) + (acc[1] + acc[5])) + ((acc[2] + acc[6]) + (acc[3] + acc[7]));
-}
-
-/// Adds (a[i] - b[i])^2 for i in [begin, end) to the lanes (lane = i mod 8 of the block).
-inline void accumulate_lanes(const float* a, const float* b, int begin, int end, float* acc)
-{
-    int i = begin;
-    for (; i + 8 <= end; i += 8)
-        for (int l = 0; l < 8; ++l) {
-            const float d = a[i + l] - b[i + l];
-            acc[l] += d * d;
+/// A partial sum of squared differences in eight interleaved lanes (two SIMD registers),
+/// added in a fixed pairwise order, so that the sum of a given sequence of add() calls is
+/// the same bits on every machine and whatever the thread count.
+class SquaredDifferenceLanes {
+public:
+    /// Adds (a[i] - b[i])^2 for i in [0, n) to lane i mod 8.
+    void add(const float* a, const float* b, int n)
+    {
+        using OIIO::simd::vfloat4;
+        int i = 0;
+        for (; i + 8 <= n; i += 8) {
+            const vfloat4 d0 = vfloat4(a + i) - vfloat4(b + i);
+            const vfloat4 d1 = vfloat4(a + i + 4) - vfloat4(b + i + 4);
+            m_low += d0 * d0;
+            m_high += d1 * d1;
         }
-    for (int l = 0; i + l < end; ++l) {
-        const float d = a[i + l] - b[i + l];
-        acc[l] += d * d;
+        if (i < n) {
+            // The rest in the first lanes; the others add zero, which leaves them exact.
+            float rest[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+            for (int l = 0; i + l < n; ++l) {
+                const float d = a[i + l] - b[i + l];
+                rest[l] = d * d;
+            }
+            m_low += vfloat4(rest);
+            m_high += vfloat4(rest + 4);
+        }
     }
-}
+
+    /// Adds (mask[i] (a[i] - b[i]))^2 for i in [0, n) to lane i mod 8; n a multiple of 8.
+    void add_masked(const float* a, const float* b, const float* mask, int n)
+    {
+        using OIIO::simd::vfloat4;
+        for (int i = 0; i < n; i += 8) {
+            const vfloat4 d0 = (vfloat4(a + i) - vfloat4(b + i)) * vfloat4(mask + i);
+            const vfloat4 d1 = (vfloat4(a + i + 4) - vfloat4(b + i + 4)) * vfloat4(mask + i + 4);
+            m_low += d0 * d0;
+            m_high += d1 * d1;
+        }
+    }
+
+    /// The lanes added: ((l0 + l4) + (l1 + l5)) + ((l2 + l6) + (l3 + l7)).
+    float sum() const
+    {
+        const OIIO::simd::vfloat4 pairs = m_low + m_high;
+        return (pairs[0] + pairs[1]) + (pairs[2] + pairs[3]);
+    }
+
+private:
+    OIIO::simd::vfloat4 m_low = OIIO::simd::vfloat4::Zero();
+    OIIO::simd::vfloat4 m_high = OIIO::simd::vfloat4::Zero();
+};
 
 inline float distance2(const float* a, const float* b, int dim)
 {
-    float acc[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
-    accumulate_lanes(a, b, 0, dim, acc);
-    return sum_lanes(acc);
+    SquaredDifferenceLanes lanes;
+    lanes.add(a, b, dim);
+    return lanes.sum();
 }
 
 /// distance2(a, b, dim) if it is < bound, else a value >= bound. Checked every 32
-/// components; exact because every lane only grows and sum_lanes is monotone in each.
+/// components; exact because every lane only grows and the sum is monotone in each.
 inline float distance2_below(const float* a, const float* b, int dim, float bound)
 {
-    float acc[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+    SquaredDifferenceLanes lanes;
     constexpr int block = 32;
     int i = 0;
     for (; i + block < dim; i += block) {
-        accumulate_lanes(a, b, i, i + block, acc);
-        const float partial = sum_lanes(acc);
+        lanes.add(a + i, b + i, block);
+        const float partial = lanes.sum();
         if (partial >= bound)
             return partial;
     }
-    accumulate_lanes(a, b, i, dim, acc);
-    return sum_lanes(acc);
+    lanes.add(a + i, b + i, dim - i);
+    return lanes.sum();
 }
 
 /// Asks the cache for a vector of `dim` floats ahead of its use: candidate vectors lie

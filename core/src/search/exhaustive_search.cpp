@@ -10,6 +10,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 namespace {
 
@@ -39,7 +41,7 @@ public:
             OIIO::parallel_for(
                 int64_t(0), int64_t(m_nchunks),
                 [&](int64_t c) { bests[size_t(c)] = scan(query, size_t(c)); },
-                OIIO::paropt(m_nthreads).minitems(1));
+                detail::split_every_item(m_nthreads));
         else
             for (size_t c = 0; c < m_nchunks; ++c)
                 bests[c] = scan(query, c);

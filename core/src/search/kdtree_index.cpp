@@ -6,6 +6,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include "distance_pvt.h"
 
 #include "nanoflann_adaptor_pvt.h"
@@ -47,7 +49,7 @@ KdTreeIndex::KdTreeIndex(const VectorSet& vectors, int dims, int nthreads)
             for (size_t i = size_t(b) * kProjectBlock; i < end; ++i)
                 m_pca.project(vectors.row(i), projected.data() + i * d);
         },
-        OIIO::paropt(nthreads).minitems(1));
+        detail::split_every_item(nthreads));
     m_tree
         = std::make_unique<Tree>(ReducedPoints { projected.data(), vectors.count, reduced_dim() });
     // Store the points in the tree's order (nanoflann's vAcc: leaf by leaf), so a leaf's

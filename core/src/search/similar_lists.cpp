@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include "distance_pvt.h"
 
 namespace texsyn::detail {
@@ -54,7 +56,7 @@ std::vector<uint32_t> similar_lists(const KdTreeIndex& index, size_t k, size_t c
                     row[j] = j < keep ? ranked[j].second : i;
             }
         },
-        OIIO::paropt(nthreads).minitems(1));
+        detail::split_every_item(nthreads));
     return lists;
 }
 

@@ -15,6 +15,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 namespace {
 
@@ -166,7 +168,7 @@ private:
             f(uint32_t(c), b, std::min(end, b + kTsvqChunk));
         };
         if (n > 1 && size_t(end - begin) * m_dim >= kParallelFloats)
-            OIIO::parallel_for(int64_t(0), int64_t(n), run, OIIO::paropt(m_nthreads).minitems(1));
+            OIIO::parallel_for(int64_t(0), int64_t(n), run, detail::split_every_item(m_nthreads));
         else
             for (uint32_t c = 0; c < n; ++c)
                 run(c);

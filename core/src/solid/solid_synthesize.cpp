@@ -12,6 +12,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn {
 
 namespace {
@@ -106,7 +108,7 @@ void add_steerable_solid(const Volume& image, SliceAxis axis, const Pyramid& pyr
                 1);
             add_slice(slice, axis, int(i), sum);
         },
-        OIIO::paropt(nthreads, OIIO::paropt::SplitDir::Y, 1));
+        detail::split_every_item(nthreads));
 }
 
 // §3.3 match-texture with §4's pyramids, from noise already in `image`.

@@ -8,6 +8,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 
 namespace {
@@ -80,7 +82,7 @@ FaceValues filter_faces(const FaceLevel& level, const FaceValues& values, const 
                     out[c][size_t(i)] = weights > 0.0 ? float(sum[c] / weights) : 0.0f;
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     return out;
 }
 

@@ -8,6 +8,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 namespace texsyn::detail {
 
 namespace {
@@ -213,7 +215,7 @@ std::vector<std::array<uint32_t, kStencilSlots>> face_stencils(const FaceLevel& 
                 }
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     return out;
 }
 

@@ -14,6 +14,8 @@
 
 #include <OpenImageIO/parallel.h>
 
+#include "image/parallel_pvt.h"
+
 #include "closest_point_pvt.h"
 
 namespace texsyn::detail {
@@ -157,7 +159,7 @@ void pad_tile(std::vector<Plane>& channels, const std::vector<uint8_t>& covered,
                 }
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     OIIO::parallel_for_chunked(
         0, int64_t(h), 0,
         [&](int64_t begin, int64_t end) {
@@ -199,7 +201,7 @@ void pad_tile(std::vector<Plane>& channels, const std::vector<uint8_t>& covered,
                 }
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
 }
 
 // Everything a tile's texels are computed from.
@@ -293,7 +295,7 @@ void bake_tile(const BakeContext& ctx, const std::vector<uint32_t>& faces, UvBak
                     }
             }
         },
-        OIIO::paropt(ctx.opt.nthreads));
+        detail::split_every_item(ctx.opt.nthreads));
     distance2 = std::vector<float>();
 
     const size_t nc = ctx.vertex_values.size();
@@ -316,7 +318,7 @@ void bake_tile(const BakeContext& ctx, const std::vector<uint32_t>& faces, UvBak
                     tile.covered[k] = 1;
                 }
         },
-        OIIO::paropt(ctx.opt.nthreads));
+        detail::split_every_item(ctx.opt.nthreads));
     tile.covered_texels = size_t(std::count(tile.covered.begin(), tile.covered.end(), 1));
     if (ctx.opt.pad)
         pad_tile(tile.channels, tile.covered, ctx.opt.nthreads);
@@ -429,7 +431,7 @@ FaceValues vertex_colours(const FaceLevel& level, const FaceValues& values, int 
                 }
             }
         },
-        OIIO::paropt(nthreads));
+        detail::split_every_item(nthreads));
     return out;
 }
 
