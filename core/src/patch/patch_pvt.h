@@ -68,6 +68,34 @@ struct SampleLevel {
 SampleLevel sample_level(
     const std::vector<Plane>& planes, int cell_width, int nthreads, bool histograms = true);
 
+/// The levels of one sample that the runs of one synthesis read (the level trial's runs
+/// and the final one): the sample's Gaussian pyramid (with isotropic=1 each level an atlas
+/// of its variants, each reduced on its own), each level's SampleLevel and its k-coherence
+/// lists, each made once, when first asked for. Not thread-safe: one synthesis uses it.
+class SampleLevels {
+public:
+    /// `planes` (the sample's, then the weighted guidance channel) up to `levels` levels;
+    /// the k-coherence lists for `patch` x `patch` patches and `coherence`.
+    SampleLevels(const std::vector<Plane>& planes, int levels, bool isotropic, int patch,
+        int coherence, int nthreads);
+
+    /// Level `l` (< levels).
+    const SampleLevel& level(int l);
+
+    /// Level `l`'s similar_patches table. A table cut short by `stop` is not kept.
+    const std::vector<uint32_t>& similar(int l, const StopFlag* stop);
+
+private:
+    struct Entry {
+        bool made = false, similar_made = false;
+        SampleLevel level;
+        std::vector<uint32_t> similar;
+    };
+    int m_variants, m_patch, m_coherence, m_nthreads;
+    std::vector<std::vector<std::vector<Plane>>> m_pyramids; // [variant][level][channel]
+    std::vector<Entry> m_entries;
+};
+
 /// The number of variants isotropic=1 takes of a width x height sample: its 8 rotations and
 /// mirror images if square, else the 4 that keep its size (mirrored in x, in y, both).
 int variant_count(int width, int height, bool isotropic);

@@ -147,36 +147,15 @@ struct Copies {
     int atlas_width = 0;
 };
 
-// Texture optimization of `planes` (the sample's, then the weighted guidance channel; sw x
-// sh) into opt.width x opt.height with opt's resolved schedule, coarse to fine. Progress
+// Texture optimization of the sample's levels into opt.width x opt.height with opt's
+// resolved schedule (opt.levels at most those `sample` holds), coarse to fine. Progress
 // goes from `progress_from` over `progress_span`.
-Copies optimize(const std::vector<Plane>& planes, int sw, int sh, const PatchOptions& opt,
-    double progress_from, double progress_span)
+Copies optimize(detail::SampleLevels& sample, const PatchOptions& opt, double progress_from,
+    double progress_span)
 {
     const int w = opt.width, h = opt.height, levels = opt.levels;
     const detail::Wrap wrap { opt.wrap == PatchWrap::Both || opt.wrap == PatchWrap::X,
         opt.wrap == PatchWrap::Both || opt.wrap == PatchWrap::Y };
-    // The sample's levels: with isotropic=1 its rotations and mirror images side by side,
-    // each reduced on its own (a variant's pyramid is not the variant of the pyramid).
-    const int variants = detail::variant_count(sw, sh, opt.isotropic != 0);
-    std::vector<std::vector<std::vector<Plane>>> pyramids;
-    for (int t = 0; t < variants; ++t) {
-        std::vector<Plane> turned;
-        for (const Plane& p : planes)
-            turned.push_back(t == 0 ? p : detail::variant_plane(p, t));
-        pyramids.push_back(gaussian_pyramid(turned, levels, Boundary::Reflect, opt.nthreads));
-    }
-    auto sample_at = [&](int l) {
-        const std::vector<Plane>& first = pyramids[0][size_t(l)];
-        const int cw = first[0].width(), ch = first[0].height();
-        std::vector<Plane> atlas(first.size(), Plane(cw * variants, ch));
-        for (int t = 0; t < variants; ++t)
-            for (size_t c = 0; c < atlas.size(); ++c)
-                for (int y = 0; y < ch; ++y)
-                    std::copy_n(pyramids[size_t(t)][size_t(l)][c].row(y), cw,
-                        atlas[c].row(y) + size_t(t) * size_t(cw));
-        return detail::sample_level(atlas, cw, opt.nthreads);
-    };
     const auto out_sizes = level_sizes(w, h, levels);
 
     // Progress: one unit per output pixel searched and voted, per iteration.
@@ -188,8 +167,7 @@ Copies optimize(const std::vector<Plane>& planes, int sw, int sh, const PatchOpt
     PatchField field;
     detail::CentreRange coarse_range;
     std::vector<Plane> out;
-    SampleLevel level;
-    auto match_histograms = [&] {
+    auto match_histograms = [&](const SampleLevel& level) {
         for (size_t c = 0; c < out.size(); ++c) {
             detail::throw_if_stopped(opt.stop);
             match_histogram(out[c], level.histograms[c], HistogramMode::Exact, opt.nthreads);
@@ -197,7 +175,7 @@ Copies optimize(const std::vector<Plane>& planes, int sw, int sh, const PatchOpt
     };
     for (int l = levels - 1; l >= 0; --l) {
         const bool coarsest = l == levels - 1;
-        level = sample_at(l);
+        const SampleLevel& level = sample.level(l);
         const int lw = out_sizes[size_t(l)].first, lh = out_sizes[size_t(l)].second;
         const std::vector<int> patches = patches_at(opt, l);
         const detail::CentreRange first { level.pixels.width, level.pixels.height,
@@ -211,14 +189,12 @@ Copies optimize(const std::vector<Plane>& planes, int sw, int sh, const PatchOpt
         detail::vote(level, field, patches.front(), coarsest ? PatchVote::Mean : opt.vote,
             opt.nthreads, opt.stop, out, wrap);
         if (!coarsest)
-            match_histograms();
+            match_histograms(level);
         // k-coherence where the layout forms (the lists of the level's largest patch serve
         // its smaller ones); the finest level refines its coarser level's field with
         // propagation and a local random search.
-        const std::vector<uint32_t> similar = l == 0
-            ? std::vector<uint32_t>()
-            : detail::similar_patches(level.pixels, level.cell_width, patches.front(),
-                opt.coherence, opt.nthreads, opt.stop);
+        static const std::vector<uint32_t> none;
+        const std::vector<uint32_t>& similar = l == 0 ? none : sample.similar(l, opt.stop);
         detail::throw_if_stopped(opt.stop);
         for (size_t pi = 0; pi < patches.size(); ++pi) {
             const int p = patches[pi];
@@ -248,7 +224,7 @@ Copies optimize(const std::vector<Plane>& planes, int sw, int sh, const PatchOpt
                 detail::patch_match(level, padded, p / 2, similar, match, field);
                 detail::throw_if_stopped(opt.stop);
                 detail::vote(level, field, p, opt.vote, opt.nthreads, opt.stop, out, wrap);
-                match_histograms();
+                match_histograms(level);
                 done += double(lw) * double(lh);
                 detail::report_progress(
                     opt.progress, opt.stop, float(progress_from + progress_span * done / total));
@@ -257,10 +233,11 @@ Copies optimize(const std::vector<Plane>& planes, int sw, int sh, const PatchOpt
     }
 
     // The copy: each pixel the voted-for sample pixel nearest the average.
+    const SampleLevel& finest = sample.level(0);
     Copies copies;
     copies.picked
-        = detail::nearest_votes(level, field, opt.patch.back(), out, opt.nthreads, opt.stop, wrap);
-    copies.atlas_width = level.pixels.width;
+        = detail::nearest_votes(finest, field, opt.patch.back(), out, opt.nthreads, opt.stop, wrap);
+    copies.atlas_width = finest.pixels.width;
     detail::throw_if_stopped(opt.stop);
     return copies;
 }
@@ -304,6 +281,8 @@ Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
     const FeatureScale& scale, bool automatic_levels, PatchOptions& opt, std::string& schedule)
 {
     const int sw = in.width(), sh = in.height();
+    detail::SampleLevels sample(
+        planes, opt.levels, opt.isotropic != 0, opt.patch.front(), opt.coherence, opt.nthreads);
     const int fewer
         = automatic_levels ? detail::alternative_levels(std::min(sw, sh), scale, opt.levels) : 0;
     PatchOptions deeper = opt;
@@ -311,7 +290,7 @@ Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
     deeper.height = std::min(opt.height, int(kTrialScale * sh));
     if (fewer == 0
         || levels_that_fit(sw, sh, deeper.width, deeper.height, opt.levels, opt) < opt.levels)
-        return optimize(planes, sw, sh, opt, 0.0, 1.0);
+        return optimize(sample, opt, 0.0, 1.0);
     const bool final_size = deeper.width == opt.width && deeper.height == opt.height;
     const double span = final_size ? 0.5 : 0.25;
     PatchOptions shallower = deeper;
@@ -319,8 +298,8 @@ Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
     shallower.iterations.clear();
     for (int l = 0; l < fewer; ++l)
         shallower.iterations.push_back(opt.iterations_at(l));
-    Copies a = optimize(planes, sw, sh, deeper, 0.0, span);
-    Copies b = optimize(planes, sw, sh, shallower, span, span);
+    Copies a = optimize(sample, deeper, 0.0, span);
+    Copies b = optimize(sample, shallower, span, span);
     const double da = detail::structure_distance(
         copied(a, in, deeper.width, deeper.height).image, in, scale.size, opt.nthreads);
     const double db = detail::structure_distance(
@@ -338,7 +317,7 @@ Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
     }
     if (final_size)
         return keep_fewer ? b : a;
-    return optimize(planes, sw, sh, opt, 2 * span, 1.0 - 2 * span);
+    return optimize(sample, opt, 2 * span, 1.0 - 2 * span);
 }
 
 bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOptions& given,

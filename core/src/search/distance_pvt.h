@@ -28,16 +28,14 @@ public:
             m_low += d0 * d0;
             m_high += d1 * d1;
         }
-        if (i < n) {
-            // The rest in the first lanes; the others add zero, which leaves them exact.
-            float rest[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
-            for (int l = 0; i + l < n; ++l) {
-                const float d = a[i + l] - b[i + l];
-                rest[l] = d * d;
-            }
-            m_low += vfloat4(rest);
-            m_high += vfloat4(rest + 4);
-        }
+        if (i + 4 <= n) {
+            const vfloat4 d = vfloat4(a + i) - vfloat4(b + i);
+            m_low += d * d;
+            i += 4;
+            if (i < n)
+                m_high += squared_first(a + i, b + i, n - i);
+        } else if (i < n)
+            m_low += squared_first(a + i, b + i, n - i);
     }
 
     /// Adds (mask[i] (a[i] - b[i]))^2 for i in [0, n) to lane i mod 8; n a multiple of 8.
@@ -60,6 +58,17 @@ public:
     }
 
 private:
+    // (a[l] - b[l])^2 in lanes l < k (k in 1..3), 0 in the others, which adds nothing.
+    static OIIO::simd::vfloat4 squared_first(const float* a, const float* b, int k)
+    {
+        using namespace OIIO::simd;
+        vfloat4 va, vb;
+        va.load(a, k); // (loads k values; the other lanes are masked off below)
+        vb.load(b, k);
+        const vfloat4 d = blend0(va - vb, vint4::Iota() < vint4(k));
+        return d * d;
+    }
+
     OIIO::simd::vfloat4 m_low = OIIO::simd::vfloat4::Zero();
     OIIO::simd::vfloat4 m_high = OIIO::simd::vfloat4::Zero();
 };
