@@ -179,13 +179,9 @@ void write_recipe(CliState& state, const std::string& filename)
     Recipe recipe = *item.recipe;
     recipe.tocolorspace = item.output_colorspace;
     const std::string dir = std::filesystem::path(filename).parent_path().string();
-    std::string json;
-    try {
-        json = recipe_to_json(recipe, dir.empty() ? "." : dir);
-    } catch (const std::invalid_argument& e) {
-        throw CliError("--recipe " + filename + " : " + e.what());
-    }
-    std::string reason;
+    std::string json, reason;
+    if (!recipe_to_json(recipe, dir.empty() ? "." : dir, json, reason))
+        throw CliError("--recipe " + filename + " : " + reason);
     if (!write_bytes(state.outputs.add(filename), json, reason))
         throw CliError("--recipe " + filename + " : cannot write (" + reason + ")");
 }

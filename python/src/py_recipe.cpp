@@ -104,11 +104,10 @@ void register_recipe(py::module_& m)
             [](const Recipe& r, py::object base_dir) {
                 const std::string base
                     = base_dir.is_none() ? current_dir() : py::str(base_dir).cast<std::string>();
-                try {
-                    return recipe_to_json(r, base);
-                } catch (const std::exception& e) {
-                    raise_error(ErrorKind::Value, e.what());
-                }
+                std::string json, error;
+                if (!recipe_to_json(r, base, json, error))
+                    raise_error(ErrorKind::Value, error);
+                return json;
             },
             py::arg("base_dir") = py::none(),
             "The recipe as JSON with every option written out; paths relative to base_dir\n"

@@ -22,10 +22,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     else if (!recipe.validate(error))
         texsyn::fuzz::expect_one_line(error, "recipe validation");
     else {
-        try {
-            (void)texsyn::recipe_to_json(recipe, "/nonexistent");
-        } catch (const std::invalid_argument&) { // documented: names that are not UTF-8
-        }
+        std::string json;
+        if (!texsyn::recipe_to_json(recipe, "/nonexistent", json, error))
+            texsyn::fuzz::expect_one_line(error, "recipe_to_json");
     }
     return 0;
 }

@@ -451,7 +451,7 @@ TEST_F(Plugin, MeshesNamingFifosDoNotBlockTheHosts)
     write("bake.texsyn",
         R"({ "sample": "s.png", "method": "choosy-surface", "mesh": "torus.obj", "levels": 2,)"
         R"( "bake": "32x32" })");
-    for (const std::string& cmd : { "timeout 120 iinfo --stats bake.texsyn",
+    for (const char* cmd : { "timeout 120 iinfo --stats bake.texsyn",
              "timeout 120 oiiotool bake.texsyn -o a.exr", "timeout 120 maketx bake.texsyn -o a.tx",
              "timeout 120 /usr/bin/python3 -c \"import OpenImageIO as o; "
              "b = o.ImageBuf('bake.texsyn'); print(b.read(), b.spec().width)\"" }) {

@@ -39,7 +39,26 @@ Recipe with_sample(const std::string& sample, const std::string& method = "pyram
     return r;
 }
 
+// recipe_to_json's text of a recipe it can write.
+std::string json_of(const Recipe& r, const std::string& base_dir)
+{
+    std::string json, error;
+    EXPECT_TRUE(recipe_to_json(r, base_dir, json, error)) << error;
+    return json;
+}
+
 } // namespace
+
+TEST(Recipe, NamesThatAreNotUtf8AreRefusedNotThrown)
+{
+    Recipe r = with_sample("/shows/a/bark\xff.png");
+    std::string json = "unchanged", error;
+    EXPECT_FALSE(recipe_to_json(r, "/shows/a", json, error));
+    EXPECT_EQ(json, "unchanged");
+    EXPECT_NE(error.find("not valid UTF-8"), std::string::npos) << error;
+    r.samples = { "/shows/a/bark.png" };
+    EXPECT_NE(json_of(r, "/shows/a").find("\"sample\": \"bark.png\""), std::string::npos);
+}
 
 TEST(Recipe, ParsesEveryKeyAndResolvesPathsAgainstTheRecipesFolder)
 {
@@ -245,10 +264,10 @@ TEST(Recipe, WrittenRecipesReadBackToTheSameRecipe)
     ASSERT_TRUE(r.options.apply("size=300x200:orientations=5", error)) << error;
     r.seed = 77;
     r.iscolorspace = { "sRGB - Texture" };
-    const std::string json = recipe_to_json(r, "/shows/a");
+    const std::string json = json_of(r, "/shows/a");
     EXPECT_NE(json.find("\"sample\": \"maps/rust.png\""), std::string::npos) << json;
     // Outside the recipe's folder: relative all the same, and normalised.
-    const std::string moved = recipe_to_json(r, "/shows/b/x/../recipes");
+    const std::string moved = json_of(r, "/shows/b/x/../recipes");
     EXPECT_NE(moved.find("\"sample\": \"../../a/maps/rust.png\""), std::string::npos) << moved;
     Recipe back;
     ASSERT_TRUE(parse_recipe(json, "/shows/a", back, error)) << error;
@@ -340,7 +359,7 @@ TEST(Recipe, ParsesChoosyRecipes)
         "dims=12:"
         "eps=0.25");
     EXPECT_TRUE(r.validate(error)) << error;
-    EXPECT_NE(recipe_to_json(r, "").find("\"iterations\": \"1,8\""), std::string::npos);
+    EXPECT_NE(json_of(r, "").find("\"iterations\": \"1,8\""), std::string::npos);
     // The pyramid's iterations stay an integer.
     EXPECT_FALSE(parse_recipe(R"({ "sample": "g.png", "iterations": [1, 8] })", "", r, error));
     EXPECT_TRUE(parse_recipe(
@@ -432,7 +451,7 @@ TEST(Recipe, RestArgumentsTakeTheMethodFirstWhereverItStands)
     EXPECT_EQ(pyramid_options(r).height, 48);
     EXPECT_EQ(r.seed, 4u);
     EXPECT_EQ(pyramid_options(r).iterations, 2);
-    EXPECT_EQ(recipe_to_json(r, "").find("\"levels\""), std::string::npos);
+    EXPECT_EQ(json_of(r, "").find("\"levels\""), std::string::npos);
     // A value only the old method takes stays behind (choosy's iterations list).
     r = with_sample("grass.png", "choosy");
     ASSERT_TRUE(apply_recipe_arguments("iterations=1,8&levels=2", "", r, error)) << error;
@@ -499,7 +518,7 @@ TEST(Recipe, WrittenNeighborhoodRecipesReadBackToTheSameRecipe)
         error))
         << error;
     r.seed = 77;
-    const std::string json = recipe_to_json(r, "/shows/a");
+    const std::string json = json_of(r, "/shows/a");
     EXPECT_NE(json.find("\"method\": \"neighborhood\""), std::string::npos) << json;
     EXPECT_NE(json.find("\"seed\": 77"), std::string::npos) << json;
     EXPECT_NE(json.find("\"n\": \"9,7,5\""), std::string::npos) << json;
@@ -532,7 +551,7 @@ TEST(Recipe, EveryMethodReadsItsSamples)
     EXPECT_EQ(r.samples, (std::vector<std::string> { "/shows/a/rust.png", "/shows/a/marble.tsa" }));
     EXPECT_EQ(r.iscolorspace, (std::vector<std::string> { "sRGB", "" }));
     EXPECT_TRUE(r.validate(error)) << error;
-    const std::string json = recipe_to_json(r, "/shows/a");
+    const std::string json = json_of(r, "/shows/a");
     EXPECT_NE(
         json.find("\"sample\": [\n    \"rust.png\",\n    \"marble.tsa\"\n  ]"), std::string::npos)
         << json;
@@ -589,7 +608,7 @@ TEST(Recipe, OptionFilesAreRelativeToTheRecipe)
         << error;
     EXPECT_EQ(r.options.value("dilation"), "/shows/a/maps/ctrl.exr");
     EXPECT_EQ(r.options.value("palette"), "/abs/rust.png");
-    const std::string json = recipe_to_json(r, "/shows/a/recipes");
+    const std::string json = json_of(r, "/shows/a/recipes");
     EXPECT_NE(json.find("\"dilation\": \"../maps/ctrl.exr\""), std::string::npos) << json;
     EXPECT_EQ(json.find("\"rotation\""), std::string::npos) << json; // none given
 }

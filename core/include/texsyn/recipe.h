@@ -113,11 +113,12 @@ constexpr int kDefaultMaxRecipeSyntheses = 64;
 /// recipe.
 bool check_recipe_work(const Recipe& recipe, std::string& error);
 
-/// JSON text of `recipe` with every option of its method written out (but output files);
-/// paths (samples, colorconfig, input files) are made relative to `base_dir`. Throws
-/// std::invalid_argument if a name is not valid UTF-8 (Linux file names may be bytes;
-/// JSON text cannot hold them).
-std::string recipe_to_json(const Recipe& recipe, const std::string& base_dir);
+/// Sets `json` to the JSON text of `recipe` with every option of its method written out (but
+/// output files); paths (samples, colorconfig, input files) are made relative to `base_dir`.
+/// False (with the reason in `error`) if a name is not valid UTF-8: Linux file names may be
+/// bytes, and JSON text cannot hold them.
+bool recipe_to_json(
+    const Recipe& recipe, const std::string& base_dir, std::string& json, std::string& error);
 
 /// Runs the recipe as the `texsyn` tool runs the same command line: reads the samples
 /// (read_sample: scene-linear, analysis files as they are) and the options' input files,

@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
 
 #include <dlfcn.h>
 
@@ -127,12 +126,10 @@ bool key_text(const Recipe& recipe, int depth, std::string& text, std::string& w
         config = fs::absolute(colors->source()).lexically_normal().string() + " " + digest;
     }
     named.colorconfig.clear();
-    try {
-        text = recipe_to_json(named, "") + inputs + "colorconfig " + config + "\n";
-    } catch (const std::invalid_argument& e) {
-        why = e.what();
+    std::string json;
+    if (!recipe_to_json(named, "", json, why))
         return false;
-    }
+    text = json + inputs + "colorconfig " + config + "\n";
     return true;
 }
 
