@@ -5,6 +5,7 @@
 
 #include <texsyn/version.h>
 
+#include "py_apply_map.h"
 #include "py_methods.h"
 #include "py_objects.h"
 #include "py_recipe.h"
@@ -16,6 +17,7 @@ PYBIND11_MODULE(_texsyn, m)
     m.attr("__version__") = texsyn::version();
     texsyn::python::register_objects(m);
     texsyn::python::register_methods(m);
+    texsyn::python::register_apply_map(m);
     texsyn::python::register_recipe(m);
     // Before the interpreter finalizes (and ends daemon threads), the runs in progress stop.
     pybind11::module_::import("atexit").attr("register")(

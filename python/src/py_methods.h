@@ -7,7 +7,7 @@
 
 namespace texsyn::python {
 
-/// Defines method_table(), run_method() and apply_map() in `m`.
+/// Defines _method_table() and _run_method() (which runs any row) in `m`.
 void register_methods(pybind11::module_& m);
 
 } // namespace texsyn::python
