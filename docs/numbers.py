@@ -33,6 +33,7 @@ TESTS = {
     "choosy.": ("choosy_test", "ChoosyQuality.MatchesFirstOrderStatisticsFarBetterThanGreedy"),
     "structure.": ("structure_test", "Structure.*"),
     "surface.band.": ("surface_boundary_test", "SurfaceBoundary.*Band*"),
+    "stop.": ("methods_test", "Methods.StopLatencyIsAboutASecondForEveryRow"),
 }
 # Key prefix -> (benchmark program, bench/run.sh filter): "bench.<workload>.median" (s) and
 # "bench.<workload>.peak" (MB), <workload> the short name before the first "_" or the whole.

@@ -87,6 +87,8 @@ cd "$dir"
 # allocator: the tests that rely on either run in the normal build only.
 exclude="doc_commands|docs_generated|clang_format|recipe_schema|ocio_config|downstream|gpl_backends"
 exclude="$exclude|OutOfMemoryIsAMessage|AddressSpaceLimit|MemoryBytesIsWhatTheSearcherHolds"
+# Stop latency is a bound in seconds, which instrumented code runs several times slower.
+exclude="$exclude|StopLatency"
 # The picture-quality measurements (*Quality.*) run the same code as the unit tests at
 # sizes that take up to a quarter of an hour each under AddressSanitizer.
 # Whole methods run at three thread counts check determinism, which the thread sanitizer

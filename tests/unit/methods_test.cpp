@@ -8,6 +8,8 @@
 #include <texsyn/pyramid_synthesis.h>
 #include <texsyn/surface.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <set>
 #include <thread>
@@ -15,6 +17,8 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <gtest/gtest.h>
+
+#include "test_metrics.h"
 
 using namespace texsyn;
 
@@ -266,6 +270,7 @@ struct Case {
     const char* method;
     std::string options;
     int inputs;
+    int side = 96; ///< of the test image (and of fill's mask)
 };
 
 // Every row that synthesizes, with options that run in well under a second.
@@ -293,18 +298,21 @@ std::vector<Case> synthesis_cases()
 // to the copying method after them.
 const std::set<std::string> kNotSyntheses = { "analyze", "check", "material" };
 
-// What running a case needs: its inputs and option images (fill's mask: a square hole).
+// What running a case needs: its inputs and option images (fill's mask: a square hole of
+// a sixth of the side in the middle).
 struct CaseRun {
-    OIIO::ImageBuf image = grey_image(96, 96);
+    OIIO::ImageBuf image;
     OptionImages files;
     std::vector<MethodInput> inputs;
     MethodOptions options;
 
     bool prepare(const Case& c, std::string& error)
     {
-        OIIO::ImageBuf mask(OIIO::ImageSpec(96, 96, 1, OIIO::TypeFloat));
+        image = grey_image(c.side, c.side);
+        OIIO::ImageBuf mask(OIIO::ImageSpec(c.side, c.side, 1, OIIO::TypeFloat));
         const float one = 1.0f;
-        OIIO::ImageBufAlgo::fill(mask, &one, OIIO::ROI(40, 56, 40, 56));
+        const int h0 = c.side * 5 / 12, h1 = c.side * 7 / 12;
+        OIIO::ImageBufAlgo::fill(mask, &one, OIIO::ROI(h0, h1, h0, h1));
         if (std::string(c.method) == "fill")
             files["mask"] = mask;
         inputs.assign(size_t(c.inputs), { &image, nullptr, "s.png" });
@@ -382,6 +390,77 @@ TEST(Methods, AStopFlagEndsEveryRunAtItsNextStep)
         EXPECT_TRUE(run_method(method, run.options, run.inputs, run.files, settings, result, error))
             << error;
     }
+}
+
+// Every synthesis row at a size that runs for several seconds (the test image `side`
+// pixels square where the output is the input's size).
+std::vector<Case> long_cases()
+{
+    return {
+        { "pyramid", "size=2048x2048", 1 },
+        { "solid", "size=128x128x128", 1 },
+        { "mix", "size=1024x1024:palette=0:pattern=1", 2 },
+        { "transfer", "iterations=8", 2, 1024 },
+        { "neighborhood", "size=2048x2048", 1 },
+        { "choosy", "size=512x512", 1 },
+        { "choosy-surface",
+            "mesh=" + std::string(TEXSYN_TEST_DATA) + "/../meshes/sphere.obj:levels=4", 1 },
+        { "patch", "size=2048x2048", 1 },
+        { "fill", "mask=hole.exr", 1, 2048 },
+        { "tileable", "", 1, 4096 },
+        { "cascade", "size=8192x8192", 0 },
+    };
+}
+
+// stop.h's promise: a run ends within about a second of its stop flag being set, at any
+// size and at any point. Each row runs on a thread of its own and is stopped twice: 50 ms
+// after it starts (in its preparation: reading, analysis, setting up) and 300 ms after its
+// first progress report (in its main loop). It must end with "stopped" within 2 s (about a
+// second on an idle machine; the margin is for the other tests running beside it).
+// (A timing bound: left out of the sanitizer builds, which run several times slower.)
+TEST(Methods, StopLatencyIsAboutASecondForEveryRow)
+{
+    using Clock = std::chrono::steady_clock;
+    using std::chrono::milliseconds;
+    std::set<std::string> covered(kNotSyntheses);
+    for (const Case& c : long_cases()) {
+        covered.insert(c.method);
+        CaseRun run;
+        std::string error;
+        ASSERT_TRUE(run.prepare(c, error)) << error;
+        for (const bool after_progress : { false, true }) {
+            SCOPED_TRACE(std::string(c.method) + (after_progress ? ", in its loop" : ", early"));
+            StopFlag stop { false };
+            std::atomic<bool> reported { false };
+            RunSettings settings;
+            settings.stop = &stop;
+            settings.progress = [&](float) { reported = true; };
+            MethodResult result;
+            bool ok = true;
+            Clock::time_point ended;
+            std::thread runner([&] {
+                ok = run_method(*find_method(c.method), run.options, run.inputs, run.files,
+                    settings, result, error);
+                ended = Clock::now();
+            });
+            const Clock::time_point limit = Clock::now() + std::chrono::seconds(60);
+            while (after_progress && !reported && Clock::now() < limit)
+                std::this_thread::sleep_for(milliseconds(5));
+            std::this_thread::sleep_for(milliseconds(after_progress ? 300 : 50));
+            const Clock::time_point stopped = Clock::now();
+            stop = true;
+            runner.join();
+            EXPECT_FALSE(ok) << "the run ended before it was stopped: make the case longer";
+            EXPECT_TRUE(ends_with(error, ": stopped")) << error;
+            const double latency = std::chrono::duration<double>(ended - stopped).count();
+            test::doc_number(
+                std::string("stop.") + c.method + (after_progress ? ".loop_ms" : ".early_ms"),
+                1000.0 * latency, 0);
+            EXPECT_LT(latency, 1.5);
+        }
+    }
+    for (const Method* m : methods())
+        EXPECT_TRUE(covered.count(m->name)) << m->name << " has no case in long_cases()";
 }
 
 // Runs of different methods in one process, at once on their own threads, give the bits

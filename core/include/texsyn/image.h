@@ -77,8 +77,10 @@ struct PlanarImage {
 /// "oiio:UnassociatedAlpha" (read_image() asks for that, so 8-bit PNG colour under
 /// zero alpha survives). Fails (false, message in `error`) if src has an error, is
 /// empty, is not 2-D (depth > 1), or if any pixel is NaN or infinite (the message names
-/// the first offending pixel and channel).
-bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::string& error);
+/// the first offending pixel and channel). Rows are copied on up to `nthreads` threads
+/// (0 = every core).
+bool planes_from_imagebuf(
+    const OIIO::ImageBuf& src, PlanarImage& dst, std::string& error, int nthreads = 0);
 
 /// False, with "pixel (X, Y) channel C is NaN; texsyn needs finite pixel values" (or
 /// "infinite") for the first such pixel in scanline order, if any pixel of `src` is not
@@ -90,6 +92,8 @@ bool check_finite_pixels(const OIIO::ImageBuf& src, std::string& error);
 /// colour channels are multiplied by alpha; otherwise they are left un-associated and the
 /// spec says "oiio:UnassociatedAlpha" = 1, which PNG and TIFF writers store losslessly.
 /// Never fails for a well-formed PlanarImage (all planes the same size, >= 1 channel).
-void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst, bool associate = true);
+/// Rows are copied on up to `nthreads` threads (0 = every core).
+void imagebuf_from_planes(
+    const PlanarImage& src, OIIO::ImageBuf& dst, bool associate = true, int nthreads = 0);
 
 } // namespace texsyn

@@ -5,10 +5,12 @@
 #include <algorithm>
 
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/parallel.h>
 
 #include <texsyn/pyramid.h>
 
 #include "cascade_pvt.h"
+#include "image/parallel_pvt.h"
 #include "methods/method_helpers_pvt.h"
 
 namespace texsyn {
@@ -200,9 +202,11 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
         return false;
     }
 
-    std::vector<Plane> lattices = initial
-        ? initial_lattices(input, opt.transfer)
-        : std::vector<Plane> { detail::seeded_noise(sizes[0].w, sizes[0].h, opt.seed, 0) };
+    std::vector<Plane> lattices;
+    if (initial)
+        lattices = initial_lattices(input, opt.transfer);
+    else // (moved in: a braced list would copy the plane)
+        lattices.push_back(detail::seeded_noise(sizes[0].w, sizes[0].h, opt.seed, 0, opt.nthreads));
     Plane scratch;
     for (int l = 0; l < opt.levels; ++l) {
         const Size s = sizes[size_t(l)];
@@ -211,8 +215,8 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
             for (size_t c = 0; c < lattices.size(); ++c) {
                 lattices[c] = expand_plane(lattices[c], s.w, s.h, Boundary::Circular, opt.nthreads);
                 if (n > 0.0f) {
-                    const Plane fresh
-                        = detail::seeded_noise(s.w, s.h, opt.seed, uint64_t(l) * 1024 + c + 1);
+                    const Plane fresh = detail::seeded_noise(
+                        s.w, s.h, opt.seed, uint64_t(l) * 1024 + c + 1, opt.nthreads);
                     for (size_t i = 0; i < fresh.size(); ++i)
                         lattices[c].data()[i]
                             = (1.0f - n) * lattices[c].data()[i] + n * fresh.data()[i];
@@ -233,6 +237,7 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
         for (Plane& a : lattices) {
             const int iterations = at_level(opt.iterations, l, 1);
             for (int it = 0; it < iterations; ++it) {
+                detail::throw_if_stopped(opt.stop);
                 if (dilation || rotation)
                     detail::convolve_warped(a, kernel, spread, angle, scratch, opt.nthreads);
                 else
@@ -240,9 +245,11 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
                 // N(A) is smooth at the lattice's scale, so it resamples cleanly; the last
                 // map then draws its contours at the output's resolution.
                 const bool last = l == opt.levels - 1 && it == iterations - 1;
-                if (last && (s.w != opt.width || s.h != opt.height))
+                if (last && (s.w != opt.width || s.h != opt.height)) {
+                    detail::throw_if_stopped(opt.stop);
                     scratch
                         = detail::resample_circular(scratch, opt.width, opt.height, opt.nthreads);
+                }
                 detail::apply_cascade_map(scratch, map, r, opt.curve, opt.nthreads);
                 std::swap(a, scratch);
                 detail::report_progress(opt.progress, opt.stop,
@@ -257,19 +264,24 @@ bool synthesize(OIIO::ImageBuf& dst, const CascadeOptions& given, const OIIO::Im
         result.channels.assign(3, Plane(opt.width, opt.height));
         result.channel_names = { "R", "G", "B" };
         const Plane& v = lattices[0];
-        for (size_t i = 0; i < v.size(); ++i) {
-            float rgb[3];
-            ramp_colour(colours, v.data()[i], rgb);
-            for (int c = 0; c < 3; ++c)
-                result.channels[size_t(c)].data()[i] = rgb[c];
-        }
+        OIIO::parallel_for(
+            0, opt.height,
+            [&](int64_t y) {
+                for (int x = 0; x < opt.width; ++x) {
+                    float rgb[3];
+                    ramp_colour(colours, v(x, int(y)), rgb);
+                    for (int c = 0; c < 3; ++c)
+                        result.channels[size_t(c)](x, int(y)) = rgb[c];
+                }
+            },
+            detail::split_every_item(opt.nthreads));
     } else {
         result.channels = std::move(lattices);
         result.channel_names
             = nlattices == 1 ? std::vector<std::string> { "Y" } : input.channel_names;
         result.alpha_channel = nlattices == 1 ? -1 : input.alpha_channel;
     }
-    imagebuf_from_planes(result, dst, false);
+    imagebuf_from_planes(result, dst, false, opt.nthreads);
     dst.specmod().erase_attribute("oiio:UnassociatedAlpha");
     detail::tag_synthesis(dst.specmod(), "cascade", opt.seed, CascadeOptions::table().format(opt));
     return true;

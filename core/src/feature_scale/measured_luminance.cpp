@@ -10,6 +10,7 @@
 #include <texsyn/pyramid.h>
 
 #include "homogeneity/homogeneity_pvt.h"
+#include "image/parallel_pvt.h"
 
 namespace texsyn::detail {
 
@@ -29,8 +30,12 @@ Plane measured_luminance(const PlanarImage& sample, int nthreads, int& factor)
     const int w = sample.width(), h = sample.height();
     PlanarImage luminance;
     luminance.channels.emplace_back(w, h);
-    for (int y = 0; y < h; ++y)
-        homogeneity::luminance_row(sample, y, luminance.channels[0].row(y));
+    OIIO::parallel_for(
+        0, h,
+        [&](int64_t y) {
+            homogeneity::luminance_row(sample, int(y), luminance.channels[0].row(int(y)));
+        },
+        split_every_item(nthreads));
     while (std::min(luminance.width(), luminance.height()) > kMaxMeasuredSide) {
         luminance.channels[0] = reduce_plane(luminance.channels[0], Boundary::Reflect, nthreads);
         factor *= 2;

@@ -224,7 +224,7 @@ void add_guidance(std::vector<Plane>& planes, int ncolour, const std::vector<uin
     measured.channels.assign(filled.planes.begin(), filled.planes.begin() + ncolour);
     const int feature = int(std::lround(estimate_feature_scale(measured, nthreads).size));
     throw_if_stopped(stop);
-    Plane g = guidance_channel(filled.planes, feature);
+    Plane g = guidance_channel(filled.planes, feature, nthreads, stop);
     for (size_t i = 0; i < g.size(); ++i)
         g.data()[i] *= weight;
     planes.push_back(std::move(g));

@@ -95,17 +95,19 @@ bool tileable(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const TileableOp
         return false;
     }
     PlanarImage planes;
-    if (!planes_from_imagebuf(image, planes, error)) {
+    if (!planes_from_imagebuf(image, planes, error, opt.options.nthreads)) {
         dst.errorfmt("{}", error);
         return false;
     }
+    detail::throw_if_stopped(opt.options.stop);
     OIIO::ImageBuf flattened;
     if (opt.flatten) {
         flatten_illumination(planes, opt.options.nthreads);
-        imagebuf_from_planes(planes, flattened);
+        imagebuf_from_planes(planes, flattened, true, opt.options.nthreads);
         flattened.specmod().extra_attribs = image.spec().extra_attribs;
     }
     const OIIO::ImageBuf& source = opt.flatten ? flattened : image;
+    detail::throw_if_stopped(opt.options.stop);
     const FeatureScale scale = estimate_feature_scale(planes, opt.options.nthreads);
     const bool along_x = opt.axis != TileAxes::Y, along_y = opt.axis != TileAxes::X;
     const int dx = along_x ? w / 2 : 0, dy = along_y ? h / 2 : 0;

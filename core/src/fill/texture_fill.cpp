@@ -90,7 +90,7 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
     if (!given.validate(error))
         return fail(error);
     PlanarImage in;
-    if (!planes_from_imagebuf(image, in, error))
+    if (!planes_from_imagebuf(image, in, error, given.nthreads))
         return fail("image: " + error);
     if (given.flatten)
         flatten_illumination(in, given.nthreads);
@@ -108,7 +108,7 @@ bool fill(OIIO::ImageBuf& dst, const OIIO::ImageBuf& image, const OIIO::ImageBuf
                     "written only for a fill from the image itself");
     PlanarImage from;
     if (sample) {
-        if (!planes_from_imagebuf(*sample, from, error))
+        if (!planes_from_imagebuf(*sample, from, error, opt.nthreads))
             return fail("sample: " + error);
         if (from.nchannels() != in.nchannels())
             return fail("the sample has " + detail::count_text(from.nchannels(), "channel")

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <new>
 
+#include "parallel_pvt.h"
 #include "planar_pvt.h"
 
 namespace texsyn {
@@ -65,7 +66,8 @@ bool check_finite_pixels(const OIIO::ImageBuf& src, std::string& error)
     return true;
 }
 
-bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::string& error)
+bool planes_from_imagebuf(
+    const OIIO::ImageBuf& src, PlanarImage& dst, std::string& error, int nthreads)
 {
     if (src.has_error()) {
         error = src.geterror();
@@ -103,32 +105,43 @@ bool planes_from_imagebuf(const OIIO::ImageBuf& src, PlanarImage& dst, std::stri
         out.channel_names.push_back(
             c < int(spec.channelnames.size()) ? spec.channelnames[c] : "c" + std::to_string(c));
     }
-    std::vector<float*> rows(size_t(nc), nullptr);
-    for (int y = 0; y < h; ++y) {
-        for (int c = 0; c < nc; ++c)
-            rows[size_t(c)] = out.channels[size_t(c)].row(y);
-        const float* p = pixels + size_t(y) * size_t(w) * size_t(nc);
-        for (int x = 0; x < w; ++x, p += nc) {
-            for (int c = 0; c < nc; ++c) {
-                if (!std::isfinite(p[c])) {
-                    error = non_finite_pixel(x + spec.x, y + spec.y, out.channel_names[c], p[c]);
-                    return false;
+    // Rows are copied independently; each notes its first non-finite value, and the
+    // message names the first of those in scanline order.
+    std::vector<int> first_bad(size_t(h), -1);
+    OIIO::parallel_for(
+        0, h,
+        [&](int64_t row) {
+            const int y = int(row);
+            const float* p = pixels + size_t(y) * size_t(w) * size_t(nc);
+            for (int x = 0; x < w; ++x, p += nc) {
+                for (int c = 0; c < nc; ++c) {
+                    if (!std::isfinite(p[c])) {
+                        first_bad[size_t(y)] = x * nc + c;
+                        return;
+                    }
+                    out.channels[size_t(c)].row(y)[x] = p[c];
                 }
-                rows[size_t(c)][x] = p[c];
+                if (associated) {
+                    float a = p[out.alpha_channel];
+                    if (a > 0.0f && a != 1.0f)
+                        for (int c = 0; c < out.alpha_channel; ++c)
+                            out.channels[size_t(c)].row(y)[x] /= a;
+                }
             }
-            if (associated) {
-                float a = p[out.alpha_channel];
-                if (a > 0.0f && a != 1.0f)
-                    for (int c = 0; c < out.alpha_channel; ++c)
-                        rows[size_t(c)][x] /= a;
-            }
+        },
+        detail::split_every_item(nthreads));
+    for (int y = 0; y < h; ++y)
+        if (first_bad[size_t(y)] >= 0) {
+            const int x = first_bad[size_t(y)] / nc, c = first_bad[size_t(y)] % nc;
+            const float bad = pixels[(size_t(y) * size_t(w) + size_t(x)) * size_t(nc) + size_t(c)];
+            error = non_finite_pixel(x + spec.x, y + spec.y, out.channel_names[size_t(c)], bad);
+            return false;
         }
-    }
     dst = std::move(out);
     return true;
 }
 
-void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst, bool associate)
+void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst, bool associate, int nthreads)
 {
     const int w = src.width(), h = src.height(), nc = src.nchannels();
     OIIO::ImageSpec spec(w, h, nc, OIIO::TypeFloat);
@@ -145,19 +158,22 @@ void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst, bool asso
             throw std::bad_alloc();
         return;
     }
-    std::vector<const float*> rows(size_t(nc), nullptr);
-    for (int y = 0; y < h; ++y) {
-        for (int c = 0; c < nc; ++c)
-            rows[size_t(c)] = src.channels[size_t(c)].row(y);
-        float* p = pixels + size_t(y) * size_t(w) * size_t(nc);
-        for (int x = 0; x < w; ++x, p += nc) {
-            float a = src.alpha_channel >= 0 ? rows[size_t(src.alpha_channel)][x] : 1.0f;
-            for (int c = 0; c < nc; ++c) {
-                float v = rows[size_t(c)][x];
-                p[c] = (multiply && c < src.alpha_channel) ? v * a : v;
+    OIIO::parallel_for(
+        0, h,
+        [&](int64_t row) {
+            const int y = int(row);
+            const float* alpha
+                = src.alpha_channel >= 0 ? src.channels[size_t(src.alpha_channel)].row(y) : nullptr;
+            float* p = pixels + size_t(y) * size_t(w) * size_t(nc);
+            for (int x = 0; x < w; ++x, p += nc) {
+                const float a = alpha ? alpha[x] : 1.0f;
+                for (int c = 0; c < nc; ++c) {
+                    const float v = src.channels[size_t(c)].row(y)[x];
+                    p[c] = (multiply && c < src.alpha_channel) ? v * a : v;
+                }
             }
-        }
-    }
+        },
+        detail::split_every_item(nthreads));
 }
 
 const float* contiguous_float_pixels(const OIIO::ImageBuf& buf)

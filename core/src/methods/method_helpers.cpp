@@ -9,9 +9,12 @@
 #include <unistd.h>
 
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/parallel.h>
 
 #include <texsyn/random.h>
 #include <texsyn/version.h>
+
+#include "image/parallel_pvt.h"
 
 namespace texsyn::detail {
 
@@ -61,7 +64,7 @@ void scale_sample(PlanarImage& in, float k, int nthreads)
     PlanarImage plain = in;
     plain.alpha_channel = -1; // resampled as they are: no association
     OIIO::ImageBuf buf;
-    imagebuf_from_planes(plain, buf, false);
+    imagebuf_from_planes(plain, buf, false, nthreads);
     OIIO::ImageBuf resized;
     if (!OIIO::ImageBufAlgo::resize(resized, buf, "", 0.0f, OIIO::ROI(0, w, 0, h), nthreads))
         throw std::runtime_error("scale: " + resized.geterror());
@@ -78,12 +81,17 @@ void scale_sample(PlanarImage& in, float k, int nthreads)
     }
 }
 
-Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream)
+Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream, int nthreads)
 {
     Plane p(width, height);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            p(x, y) = random_uniform(seed, stream, uint64_t(y) * uint64_t(width) + uint64_t(x));
+    OIIO::parallel_for(
+        0, height,
+        [&](int64_t y) {
+            for (int x = 0; x < width; ++x)
+                p(x, int(y))
+                    = random_uniform(seed, stream, uint64_t(y) * uint64_t(width) + uint64_t(x));
+        },
+        split_every_item(nthreads));
     return p;
 }
 

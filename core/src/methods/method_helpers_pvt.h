@@ -175,7 +175,8 @@ std::string count_text(int n, const std::string& noun);
 using texsyn::check_memory; // texsyn/memory.h: refuses work beyond the memory limit
 using texsyn::format_bytes;
 
-/// Uniform noise in [0, 1), pixel i from random_uniform(seed, stream, i).
-Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream);
+/// Uniform noise in [0, 1), pixel i from random_uniform(seed, stream, i): the same at any
+/// `nthreads` (0 = every core).
+Plane seeded_noise(int width, int height, uint64_t seed, uint64_t stream, int nthreads);
 
 } // namespace texsyn::detail

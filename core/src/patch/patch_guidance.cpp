@@ -7,7 +7,12 @@
 #include <cmath>
 #include <limits>
 
+#include <OpenImageIO/parallel.h>
+
 #include <texsyn/pyramid.h>
+
+#include "image/parallel_pvt.h"
+#include "methods/method_helpers_pvt.h"
 
 namespace texsyn::detail {
 
@@ -85,19 +90,26 @@ void scale_like_colour(Plane& plane, const std::vector<Plane>& colour)
         plane.data()[i] = float((plane.data()[i] - mean) * scale);
 }
 
-Plane guidance_channel(const std::vector<Plane>& colour, int feature_size)
+Plane guidance_channel(
+    const std::vector<Plane>& colour, int feature_size, int nthreads, const StopFlag* stop)
 {
     const Plane l = luminance(colour);
     const int w = l.width(), h = l.height();
     // Gradient magnitude (central differences, clamped at the edges); the mask is its top
     // fifth.
     Plane grad(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const float gx = l(std::min(x + 1, w - 1), y) - l(std::max(x - 1, 0), y);
-            const float gy = l(x, std::min(y + 1, h - 1)) - l(x, std::max(y - 1, 0));
-            grad(x, y) = gx * gx + gy * gy;
-        }
+    OIIO::parallel_for(
+        0, h,
+        [&](int64_t row) {
+            const int y = int(row);
+            for (int x = 0; x < w; ++x) {
+                const float gx = l(std::min(x + 1, w - 1), y) - l(std::max(x - 1, 0), y);
+                const float gy = l(x, std::min(y + 1, h - 1)) - l(x, std::max(y - 1, 0));
+                grad(x, y) = gx * gx + gy * gy;
+            }
+        },
+        split_every_item(nthreads));
+    throw_if_stopped(stop);
     std::vector<float> sorted(grad.data(), grad.data() + grad.size());
     const size_t cut = sorted.size() * 4 / 5;
     std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(cut), sorted.end());
@@ -108,21 +120,37 @@ Plane guidance_channel(const std::vector<Plane>& colour, int feature_size)
         dist.data()[i] = grad.data()[i] > threshold || (threshold == 0.0f && grad.data()[i] > 0.0f)
             ? 0.0f
             : inf;
-    // Two passes of the 1-D transform: columns, then rows.
-    const int n = std::max(w, h);
-    std::vector<float> f(size_t(n) + 1), d(size_t(n) + 1), z(size_t(n) + 1);
-    std::vector<int> v(size_t(n) + 1);
-    for (int x = 0; x < w; ++x) {
-        for (int y = 0; y < h; ++y)
-            f[size_t(y)] = dist(x, y);
-        distance_line(f.data(), d.data(), h, v, z);
-        for (int y = 0; y < h; ++y)
-            dist(x, y) = d[size_t(y)];
-    }
-    for (int y = 0; y < h; ++y) {
-        distance_line(dist.row(y), d.data(), w, v, z);
-        std::copy_n(d.data(), w, dist.row(y));
-    }
+    throw_if_stopped(stop);
+    // Two passes of the 1-D transform: columns, then rows; each line on its own.
+    auto lines = [&](int count, int length, auto&& load, auto&& store) {
+        OIIO::parallel_for_range(
+            0, count,
+            [&](int64_t begin, int64_t end) {
+                std::vector<float> f(size_t(length) + 1), d(size_t(length) + 1),
+                    z(size_t(length) + 1);
+                std::vector<int> v(size_t(length) + 1);
+                for (int64_t i = begin; i < end && !stop_requested(stop); ++i) {
+                    load(int(i), f.data());
+                    distance_line(f.data(), d.data(), length, v, z);
+                    store(int(i), d.data());
+                }
+            },
+            split_every_item(nthreads));
+        throw_if_stopped(stop);
+    };
+    lines(
+        w, h,
+        [&](int x, float* f) {
+            for (int y = 0; y < h; ++y)
+                f[y] = dist(x, y);
+        },
+        [&](int x, const float* d) {
+            for (int y = 0; y < h; ++y)
+                dist(x, y) = d[y];
+        });
+    lines(
+        h, w, [&](int y, float* f) { std::copy_n(dist.row(y), w, f); },
+        [&](int y, const float* d) { std::copy_n(d, w, dist.row(y)); });
     // Clip, then scale like the colours.
     const float clip = float(std::max(1, feature_size));
     for (size_t i = 0; i < dist.size(); ++i) {

@@ -221,8 +221,9 @@ void scale_like_colour(Plane& plane, const std::vector<Plane>& colour);
 /// The automatic guidance channel of a sample (its colour planes): the distance to the
 /// nearest strong edge of its luminance (gradient magnitude in the top fifth), clipped at
 /// `feature_size` and scaled to zero mean and the colour channels' mean standard
-/// deviation.
-Plane guidance_channel(const std::vector<Plane>& colour, int feature_size);
+/// deviation. The same at any `nthreads`; once `stop` is set, throw_if_stopped's throw.
+Plane guidance_channel(
+    const std::vector<Plane>& colour, int feature_size, int nthreads, const StopFlag* stop);
 
 /// The fraction of a sample of `npixels` pixels that `source` (sample indices) copies.
 double used_fraction(const std::vector<uint32_t>& source, size_t npixels);

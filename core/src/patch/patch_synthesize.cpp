@@ -354,7 +354,8 @@ bool synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const PatchOp
             if (!guide_plane(*guide, sw, sh, colour, g, error))
                 return fail(error);
         } else {
-            g = detail::guidance_channel(colour, int(std::lround(scale.size)));
+            g = detail::guidance_channel(
+                colour, int(std::lround(scale.size)), opt.nthreads, opt.stop);
         }
         for (size_t i = 0; i < g.size(); ++i)
             g.data()[i] *= opt.guidance;

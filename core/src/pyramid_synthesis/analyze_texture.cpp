@@ -49,7 +49,7 @@ bool analyse(const OIIO::ImageBuf& sample, const PyramidOptions& opt, TextureSta
             error))
         return false;
     PlanarImage src;
-    if (!planes_from_imagebuf(sample, src, error)) {
+    if (!planes_from_imagebuf(sample, src, error, opt.nthreads)) {
         error = "sample: " + error;
         return false;
     }

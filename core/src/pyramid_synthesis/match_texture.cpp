@@ -90,7 +90,7 @@ bool synthesize(OIIO::ImageBuf& dst, const TextureStatistics& stats, const Pyram
         return fail(error);
     PlanarImage initial;
     if (start) {
-        if (!planes_from_imagebuf(*start, initial, error))
+        if (!planes_from_imagebuf(*start, initial, error, opt.nthreads))
             return fail("start image: " + error);
         if (initial.nchannels() != stats.nchannels())
             return fail("start image has " + std::to_string(initial.nchannels())
@@ -134,7 +134,7 @@ bool synthesize(OIIO::ImageBuf& dst, const TextureStatistics& stats, const Pyram
                     float(c * opt.iterations + it) / float(std::max(1, nc * opt.iterations)));
             };
             Plane image = start ? std::move(initial.channels[size_t(c)])
-                                : detail::seeded_noise(w, h, opt.seed, uint64_t(c));
+                                : detail::seeded_noise(w, h, opt.seed, uint64_t(c), opt.nthreads);
             std::vector<Plane> work; // freed after each component: one set is alive
             match_texture(image, comp.pixels, adjusted_bands(comp, stats, opt), *synthesis,
                 opt.iterations, opt.histogram, opt.nthreads, opt.stop, work, iteration_done);
@@ -157,7 +157,7 @@ bool synthesize(OIIO::ImageBuf& dst, const TextureStatistics& stats, const Pyram
 
     // Same alpha convention as the sample: un-associated colour stays so (and survives
     // where alpha is 0), associated colour (OIIO's default) is re-associated.
-    imagebuf_from_planes(out, dst, !stats.unassociated_alpha);
+    imagebuf_from_planes(out, dst, !stats.unassociated_alpha, opt.nthreads);
     PyramidOptions resolved = opt;
     resolved.width = w;
     resolved.height = h;

@@ -203,7 +203,7 @@ bool synthesize(
             detail::report_progress(opt.progress, opt.stop,
                 float(c * opt.iterations + it) / float(std::max(1, nc * opt.iterations)));
         };
-        Volume image(detail::seeded_noise(w, h * d, opt.seed, uint64_t(c)), h, d);
+        Volume image(detail::seeded_noise(w, h * d, opt.seed, uint64_t(c), opt.nthreads), h, d);
         const ComponentTables tables { comp.pixels, comp.bands,
             combined ? &steer.components[size_t(c)].bands : nullptr };
         match_solid(image, tables, plan, opt, iteration_done);
