@@ -7,6 +7,8 @@
 // and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -17,7 +19,7 @@
 #include <texsyn/options.h>
 #include <texsyn/stop.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// The pointwise maps p of [0, 1] into [0, 1]; r in [0, 4] sets the peak value r/4.
 enum class CascadeMap {

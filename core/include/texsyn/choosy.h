@@ -6,6 +6,8 @@
 // float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -17,7 +19,7 @@
 #include <texsyn/source_map.h>
 #include <texsyn/stop.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// How choosy sampling finds the best-scoring sample neighbourhood.
 enum class ChoosySearch {

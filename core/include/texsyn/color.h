@@ -7,13 +7,15 @@
 // way out. Alpha is never colour converted and never dropped.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <texsyn/image.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// An OCIO config. Immutable after loading; thread safe.
 class ColorConfig {

@@ -2,11 +2,13 @@
 // Text that goes into error messages.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <string>
 #include <string_view>
 #include <vector>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// `text` with control characters (line breaks, tabs, NUL, DEL) and bytes that are not
 /// valid UTF-8 written as "\xHH": errors echo what the user gave, and an echoed line break

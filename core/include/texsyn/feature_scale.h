@@ -17,11 +17,13 @@
 //    with size 1 and no periods.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <string>
 
 #include <texsyn/image.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// What estimate_feature_scale() measured.
 struct FeatureScale {

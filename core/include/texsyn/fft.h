@@ -18,11 +18,13 @@
 //    default) parallelises over rows and columns; the result does not depend on it.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <complex>
 #include <memory>
 #include <string>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 enum class FftBackend { Kiss, Fftw };
 

@@ -8,6 +8,8 @@
 // float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -20,7 +22,7 @@
 #include <texsyn/patch.h>
 #include <texsyn/stop.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// How a fill's copies meet the kept pixels at the mask's outline.
 enum class FillOutline {

@@ -7,12 +7,14 @@
 // do not depend on it.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstddef>
 #include <vector>
 
 #include <texsyn/image.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 enum class HistogramMode {
     Exact,   ///< quantile matching: out[rank i] = Q((i + 0.5)/n) — the default

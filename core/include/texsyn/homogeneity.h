@@ -20,13 +20,15 @@
 //    and with added lighting gradients; the table is in docs/homogeneity.md.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <array>
 #include <string>
 #include <vector>
 
 #include <texsyn/image.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// Above this peak-to-peak relative amplitude of the fitted illumination the sample is poor.
 inline constexpr double homogeneity_max_illumination_amplitude = 0.75;

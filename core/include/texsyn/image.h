@@ -8,13 +8,15 @@
 //    pixel formats at the edges).
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// How a pixel outside [0,width)x[0,height) is addressed.
 ///  Circular: the image is a torus (x mod width) — synthesis, seamless tiling.

@@ -8,6 +8,8 @@
 // conversion, so colour under zero alpha survives; alpha is never colour converted.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <memory>
 #include <string>
 
@@ -17,7 +19,7 @@
 #include <texsyn/methods.h>
 #include <texsyn/stats.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// A sample as read from its file: an image or an analysis.
 struct Sample {

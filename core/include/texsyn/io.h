@@ -2,13 +2,15 @@
 // File input and atomic output. Every message names the file.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <functional>
 #include <string>
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// Reads the first subimage of `filename` completely into a float ImageBuf (its metadata
 /// included), with colour left un-associated from alpha where the file stores it so (the

@@ -6,6 +6,8 @@
 // normal map turns with the copy.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <string>
 #include <vector>
 
@@ -15,7 +17,7 @@
 #include <texsyn/options.h>
 #include <texsyn/source_map.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// What a map of a material holds.
 enum class MapKind {

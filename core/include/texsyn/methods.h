@@ -15,6 +15,8 @@
 //    RunSettings::nthreads is.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -32,7 +34,7 @@
 #include <texsyn/stop.h>
 #include <texsyn/subbands.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 struct SurfaceTexture;    // texsyn/surface.h
 struct TextureStatistics; // texsyn/stats.h: an analysis, opaque to the registry

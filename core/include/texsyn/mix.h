@@ -6,6 +6,8 @@
 // dst, scene-linear float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,7 +19,7 @@
 #include <texsyn/stats.h>
 #include <texsyn/subbands.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// Options of texture mixtures (Heeger & Bergen 1995 §5). Exactly one mode:
 ///  - palette=I:pattern=J — the palette (colour transform, pixel and channel histograms)

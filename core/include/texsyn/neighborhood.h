@@ -7,6 +7,8 @@
 // float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,7 +21,7 @@
 #include <texsyn/source_map.h>
 #include <texsyn/stop.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// Which output pixels a neighbourhood holds (the report's Figure 2 and Figure 3).
 enum class NeighborhoodShape {

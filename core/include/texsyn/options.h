@@ -13,6 +13,8 @@
 //  - A failed set() leaves the options unchanged.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -21,7 +23,7 @@
 #include <utility>
 #include <vector>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// The kind of value an option takes: how text and a recipe's JSON may write it
 /// (docs/recipes.md), and how front ends present it.

@@ -9,6 +9,8 @@
 // float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -22,7 +24,7 @@
 #include <texsyn/source_map.h>
 #include <texsyn/stop.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// How the overlapping source patches of a pixel are averaged (the "vote").
 enum class PatchVote {

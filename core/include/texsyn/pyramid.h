@@ -16,6 +16,8 @@
 //  - `nthreads` follows OIIO (0 = default pool size); results do not depend on it.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -26,7 +28,7 @@
 #include <texsyn/stop.h>
 #include <texsyn/volume.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 enum class PyramidKind { Steerable, Laplacian };
 

@@ -7,6 +7,8 @@
 // dst, scene-linear float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -22,7 +24,7 @@
 #include <texsyn/stop.h>
 #include <texsyn/subbands.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// Options of the pyramid method. Defaults are Heeger & Bergen's.
 struct PyramidOptions {

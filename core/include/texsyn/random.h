@@ -4,9 +4,11 @@
 // "Determinism"). Streams separate independent uses (e.g. one per channel).
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// 64 well-mixed bits for (seed, stream, index). Pure function; thread safe.
 uint64_t random_bits(uint64_t seed, uint64_t stream, uint64_t index);

@@ -7,6 +7,8 @@
 // registry) is its JSON schema.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -17,7 +19,7 @@
 #include <texsyn/methods.h>
 #include <texsyn/subbands.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// What `texsyn [--seed S] [--colorconfig C] SAMPLE… [--iscolorspace I] --METHOD:OPTIONS
 /// [--tocolorspace T] -d float -o out.exr` computes, METHOD being `method`.

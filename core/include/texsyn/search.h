@@ -13,12 +13,14 @@
 //  - The vector set must outlive the searcher (it is not copied).
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// `count` vectors of `dim` floats, row-major and contiguous.
 struct VectorSet {

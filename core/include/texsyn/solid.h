@@ -6,6 +6,8 @@
 // The result is a 3-D ImageBuf (spec.depth voxels deep).
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -17,7 +19,7 @@
 #include <texsyn/options.h>
 #include <texsyn/stop.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// The pyramids of the solid method (Heeger & Bergen 1995 §4).
 enum class SolidPyramid {

@@ -10,9 +10,11 @@
 // sample's size, and it carries the synthesis's synth:* tags.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <OpenImageIO/imagebuf.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// How a normal map's vectors are stored: the first three channels hold a tangent-space
 /// normal encoded as 0.5 + 0.5 n (8-bit and float normal maps alike); the conventions differ

@@ -7,6 +7,8 @@
 // what the sample would: the quantile tables are kept whole, never binned.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <string>
 #include <vector>
 
@@ -14,7 +16,7 @@
 #include <texsyn/histogram.h>
 #include <texsyn/pyramid.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// What match-texture imposes on one synthesized component: a decorrelated colour
 /// component ("pc0", "pc1", …), alpha ("A") or an extra channel (its own name).

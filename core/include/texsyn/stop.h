@@ -4,9 +4,11 @@
 // parallel loops, so that a run ends within about a second of it at any size.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <atomic>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// A request to stop a run. Set it (to true, from any thread) and the run stops at its
 /// next check: the function fails with the message "stopped" and gives no result. The

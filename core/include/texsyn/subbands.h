@@ -3,6 +3,8 @@
 // "synth" holds the result and whose further parts hold pyramid subbands.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <string>
 #include <vector>
 
@@ -10,7 +12,7 @@
 
 #include <texsyn/image.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// A named multi-channel image: one subband of one pyramid (for --subbands output).
 struct NamedImage {

@@ -9,6 +9,8 @@
 // finest level has faces x 4^(levels-1) faces.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -22,7 +24,7 @@
 #include <texsyn/color.h>
 #include <texsyn/options.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// remesh=auto keeps meshes of fewer faces than this.
 constexpr size_t kAutoRemeshFaces = 100;

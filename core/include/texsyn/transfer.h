@@ -6,6 +6,8 @@
 // dst, scene-linear float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <string>
 #include <vector>
 
@@ -15,7 +17,7 @@
 #include <texsyn/stats.h>
 #include <texsyn/subbands.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 /// Checks options for transfer_synthesize: opt.validate(), and no size (the image gives
 /// the output's size). False with a message.

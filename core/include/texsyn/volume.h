@@ -16,6 +16,8 @@
 //  - Volumes hold scene-linear float colour, un-associated from alpha.
 #pragma once
 
+#include <texsyn/export.h>
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -26,7 +28,7 @@
 
 #include <texsyn/image.h>
 
-namespace texsyn {
+namespace TEXSYN_API texsyn {
 
 class ColorConfig; // texsyn/color.h
 
