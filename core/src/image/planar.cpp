@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <new>
+#include <vector>
 
 #include "parallel_pvt.h"
 #include "planar_pvt.h"
@@ -113,19 +114,22 @@ bool planes_from_imagebuf(
         [&](int64_t row) {
             const int y = int(row);
             const float* p = pixels + size_t(y) * size_t(w) * size_t(nc);
+            std::vector<float*> rows(static_cast<size_t>(nc));
+            for (int c = 0; c < nc; ++c)
+                rows[size_t(c)] = out.channels[size_t(c)].row(y);
             for (int x = 0; x < w; ++x, p += nc) {
                 for (int c = 0; c < nc; ++c) {
                     if (!std::isfinite(p[c])) {
                         first_bad[size_t(y)] = x * nc + c;
                         return;
                     }
-                    out.channels[size_t(c)].row(y)[x] = p[c];
+                    rows[size_t(c)][x] = p[c];
                 }
                 if (associated) {
                     float a = p[out.alpha_channel];
                     if (a > 0.0f && a != 1.0f)
                         for (int c = 0; c < out.alpha_channel; ++c)
-                            out.channels[size_t(c)].row(y)[x] /= a;
+                            rows[size_t(c)][x] /= a;
                 }
             }
         },
@@ -164,11 +168,14 @@ void imagebuf_from_planes(const PlanarImage& src, OIIO::ImageBuf& dst, bool asso
             const int y = int(row);
             const float* alpha
                 = src.alpha_channel >= 0 ? src.channels[size_t(src.alpha_channel)].row(y) : nullptr;
+            std::vector<const float*> rows(static_cast<size_t>(nc));
+            for (int c = 0; c < nc; ++c)
+                rows[size_t(c)] = src.channels[size_t(c)].row(y);
             float* p = pixels + size_t(y) * size_t(w) * size_t(nc);
             for (int x = 0; x < w; ++x, p += nc) {
                 const float a = alpha ? alpha[x] : 1.0f;
                 for (int c = 0; c < nc; ++c) {
-                    const float v = src.channels[size_t(c)].row(y)[x];
+                    const float v = rows[size_t(c)][x];
                     p[c] = (multiply && c < src.alpha_channel) ? v * a : v;
                 }
             }
