@@ -7,8 +7,8 @@ belong to namespace texsyn (functions, or the typeinfo and vtables of its classe
 other libraries' templates only the weak instantiations of std:: templates over texsyn's
 public types, which a demangled glob of core/texsyn.map cannot tell apart), and
 every exported function's own name must appear in a public header (core/include/texsyn):
-what only src/**/*_pvt.h declares is internal and stays hidden (texsyn/export.h). Prints
-each offending symbol and exits 1 if there is any.
+what only src/**/*_pvt.h declares is internal and stays hidden (the public headers'
+visibility pragmas). Prints each offending symbol and exits 1 if there is any.
 """
 import glob
 import os

@@ -7,8 +7,6 @@
 // and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,7 +17,8 @@
 #include <texsyn/options.h>
 #include <texsyn/stop.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// The pointwise maps p of [0, 1] into [0, 1]; r in [0, 4] sets the peak value r/4.
 enum class CascadeMap {
@@ -125,3 +124,4 @@ OIIO::ImageBuf cascade_synthesize(const CascadeOptions& opt,
     const OIIO::ImageBuf* rotation = nullptr, const OIIO::ImageBuf* palette = nullptr);
 
 } // namespace texsyn
+#pragma GCC visibility pop

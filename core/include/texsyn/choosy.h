@@ -6,8 +6,6 @@
 // float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,7 +17,8 @@
 #include <texsyn/source_map.h>
 #include <texsyn/stop.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// How choosy sampling finds the best-scoring sample neighbourhood.
 enum class ChoosySearch {
@@ -119,3 +118,4 @@ OIIO::ImageBuf choosy_synthesize(
     const OIIO::ImageBuf& sample, const ChoosyOptions& opt, OIIO::ImageBuf* source_map = nullptr);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -7,15 +7,14 @@
 // way out. Alpha is never colour converted and never dropped.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <texsyn/image.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// An OCIO config. Immutable after loading; thread safe.
 class ColorConfig {
@@ -160,3 +159,4 @@ void decorrelate(PlanarImage& image, const ColorTransform& t, int nthreads = 0);
 void recorrelate(PlanarImage& image, const ColorTransform& t, int nthreads = 0);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -2,13 +2,12 @@
 // Text that goes into error messages.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <string>
 #include <string_view>
 #include <vector>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// `text` with control characters (line breaks, tabs, NUL, DEL) and bytes that are not
 /// valid UTF-8 written as "\xHH": errors echo what the user gave, and an echoed line break
@@ -28,3 +27,4 @@ std::string readable_message(std::string_view message);
 std::string closest_name(std::string_view word, const std::vector<std::string>& names);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -17,13 +17,12 @@
 //    with size 1 and no periods.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <string>
 
 #include <texsyn/image.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// What estimate_feature_scale() measured.
 struct FeatureScale {
@@ -63,3 +62,4 @@ FeatureScale estimate_feature_scale(const PlanarImage& sample, int nthreads = 0)
 std::string describe_feature_scale(const FeatureScale& scale);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -18,13 +18,12 @@
 //    default) parallelises over rows and columns; the result does not depend on it.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <complex>
 #include <memory>
 #include <string>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 enum class FftBackend { Kiss, Fftw };
 
@@ -63,3 +62,4 @@ protected:
 };
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -8,8 +8,6 @@
 // float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -22,7 +20,8 @@
 #include <texsyn/patch.h>
 #include <texsyn/stop.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// How a fill's copies meet the kept pixels at the mask's outline.
 enum class FillOutline {
@@ -190,3 +189,4 @@ OIIO::ImageBuf make_tileable(
     const OIIO::ImageBuf& image, const TileableOptions& opt, TileableReport* report = nullptr);
 
 } // namespace texsyn
+#pragma GCC visibility pop

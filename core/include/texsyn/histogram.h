@@ -7,14 +7,13 @@
 // do not depend on it.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstddef>
 #include <vector>
 
 #include <texsyn/image.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 enum class HistogramMode {
     Exact,   ///< quantile matching: out[rank i] = Q((i + 0.5)/n) — the default
@@ -69,3 +68,4 @@ QuantileTable wasserstein_barycenter(
 double wasserstein1(const QuantileTable& a, const QuantileTable& b);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -20,15 +20,14 @@
 //    and with added lighting gradients; the table is in docs/homogeneity.md.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <array>
 #include <string>
 #include <vector>
 
 #include <texsyn/image.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// Above this peak-to-peak relative amplitude of the fitted illumination the sample is poor.
 inline constexpr double homogeneity_max_illumination_amplitude = 0.75;
@@ -138,3 +137,4 @@ std::string format_homogeneity_report(const HomogeneityReport& report, const std
 void flatten_illumination(PlanarImage& image, int nthreads = 0);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -8,15 +8,14 @@
 //    pixel formats at the edges).
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// How a pixel outside [0,width)x[0,height) is addressed.
 ///  Circular: the image is a torus (x mod width) — synthesis, seamless tiling.
@@ -99,3 +98,4 @@ void imagebuf_from_planes(
     const PlanarImage& src, OIIO::ImageBuf& dst, bool associate = true, int nthreads = 0);
 
 } // namespace texsyn
+#pragma GCC visibility pop

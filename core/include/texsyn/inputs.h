@@ -8,8 +8,6 @@
 // conversion, so colour under zero alpha survives; alpha is never colour converted.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <memory>
 #include <string>
 
@@ -19,7 +17,8 @@
 #include <texsyn/methods.h>
 #include <texsyn/stats.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// A sample as read from its file: an image or an analysis.
 struct Sample {
@@ -85,3 +84,4 @@ bool read_option_files(const MethodOptions& options, const ColorConfig& colors, 
     std::string& error, int nthreads = 0);
 
 } // namespace texsyn
+#pragma GCC visibility pop

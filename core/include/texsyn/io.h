@@ -2,15 +2,14 @@
 // File input and atomic output. Every message names the file.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <functional>
 #include <string>
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// Reads the first subimage of `filename` completely into a float ImageBuf (its metadata
 /// included), with colour left un-associated from alpha where the file stores it so (the
@@ -108,3 +107,4 @@ bool write_multipart_exr(const std::string& filename, const std::vector<OIIO::Im
     const std::function<void(size_t, OIIO::ImageBuf&)>& part, std::string& error);
 
 } // namespace texsyn
+#pragma GCC visibility pop

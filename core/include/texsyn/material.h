@@ -6,8 +6,6 @@
 // normal map turns with the copy.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <string>
 #include <vector>
 
@@ -17,7 +15,8 @@
 #include <texsyn/options.h>
 #include <texsyn/source_map.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// What a map of a material holds.
 enum class MapKind {
@@ -70,3 +69,4 @@ bool run_material_method(const Method& method, const MethodOptions& options,
     RunSettings settings, MethodResult& result, std::string& error);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -4,12 +4,11 @@
 // the limit, where an allocation failure would crash or be half-reported.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstddef>
 #include <string>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// The most memory, in bytes, one process of texsyn may use: set_memory_limit()'s value
 /// if one was set, else $TEXSYN_MAX_MEMORY (same syntax as parse_memory_size), else 90%

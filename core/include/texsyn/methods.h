@@ -15,8 +15,6 @@
 //    RunSettings::nthreads is.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -34,7 +32,8 @@
 #include <texsyn/stop.h>
 #include <texsyn/subbands.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 struct SurfaceTexture;    // texsyn/surface.h
 struct TextureStatistics; // texsyn/stats.h: an analysis, opaque to the registry
@@ -346,3 +345,4 @@ bool run_method(const Method& method, const MethodOptions& options,
     MethodResult& result, std::string& error);
 
 } // namespace texsyn
+#pragma GCC visibility pop

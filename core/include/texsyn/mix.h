@@ -6,8 +6,6 @@
 // dst, scene-linear float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,7 +17,8 @@
 #include <texsyn/stats.h>
 #include <texsyn/subbands.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// Options of texture mixtures (Heeger & Bergen 1995 §5). Exactly one mode:
 ///  - palette=I:pattern=J — the palette (colour transform, pixel and channel histograms)
@@ -102,3 +101,4 @@ OIIO::ImageBuf mix_synthesize(const std::vector<MixSample>& samples, const MixOp
     std::vector<NamedImage>* subbands = nullptr);
 
 } // namespace texsyn
+#pragma GCC visibility pop

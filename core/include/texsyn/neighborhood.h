@@ -7,8 +7,6 @@
 // float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -21,7 +19,8 @@
 #include <texsyn/source_map.h>
 #include <texsyn/stop.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// Which output pixels a neighbourhood holds (the report's Figure 2 and Figure 3).
 enum class NeighborhoodShape {
@@ -117,3 +116,4 @@ OIIO::ImageBuf neighborhood_synthesize(const OIIO::ImageBuf& sample, const Neigh
     OIIO::ImageBuf* source_map = nullptr);
 
 } // namespace texsyn
+#pragma GCC visibility pop

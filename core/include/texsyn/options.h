@@ -13,8 +13,6 @@
 //  - A failed set() leaves the options unchanged.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -23,7 +21,8 @@
 #include <utility>
 #include <vector>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// The kind of value an option takes: how text and a recipe's JSON may write it
 /// (docs/recipes.md), and how front ends present it.
@@ -371,3 +370,4 @@ bool check_level_list(
     std::string_view name, std::string_view shown, size_t count, int levels, std::string& error);
 
 } // namespace texsyn
+#pragma GCC visibility pop

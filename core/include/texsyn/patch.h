@@ -9,8 +9,6 @@
 // float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -24,7 +22,8 @@
 #include <texsyn/source_map.h>
 #include <texsyn/stop.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// How the overlapping source patches of a pixel are averaged (the "vote").
 enum class PatchVote {
@@ -147,3 +146,4 @@ OIIO::ImageBuf patch_synthesize(const OIIO::ImageBuf& sample, const PatchOptions
     PatchReport* report = nullptr);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -16,8 +16,6 @@
 //  - `nthreads` follows OIIO (0 = default pool size); results do not depend on it.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <functional>
 #include <memory>
 #include <string>
@@ -28,7 +26,8 @@
 #include <texsyn/stop.h>
 #include <texsyn/volume.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 enum class PyramidKind { Steerable, Laplacian };
 
@@ -164,3 +163,4 @@ std::unique_ptr<VolumePyramid> make_laplacian_pyramid_3d(
 Plane periodic_component(const Plane& image, FftBackend fft, int nthreads = 0);
 
 } // namespace texsyn
+#pragma GCC visibility pop

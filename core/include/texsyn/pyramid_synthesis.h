@@ -7,8 +7,6 @@
 // dst, scene-linear float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -24,7 +22,8 @@
 #include <texsyn/stop.h>
 #include <texsyn/subbands.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// Options of the pyramid method. Defaults are Heeger & Bergen's.
 struct PyramidOptions {
@@ -111,3 +110,4 @@ OIIO::ImageBuf pyramid_synthesize(const OIIO::ImageBuf& sample, const PyramidOpt
     std::vector<NamedImage>* subbands = nullptr);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -4,11 +4,10 @@
 // "Determinism"). Streams separate independent uses (e.g. one per channel).
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// 64 well-mixed bits for (seed, stream, index). Pure function; thread safe.
 uint64_t random_bits(uint64_t seed, uint64_t stream, uint64_t index);
@@ -18,3 +17,4 @@ uint64_t random_bits(uint64_t seed, uint64_t stream, uint64_t index);
 float random_uniform(uint64_t seed, uint64_t stream, uint64_t index);
 
 } // namespace texsyn
+#pragma GCC visibility pop

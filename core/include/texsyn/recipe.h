@@ -7,8 +7,6 @@
 // registry) is its JSON schema.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -19,7 +17,8 @@
 #include <texsyn/methods.h>
 #include <texsyn/subbands.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// What `texsyn [--seed S] [--colorconfig C] SAMPLE… [--iscolorspace I] --METHOD:OPTIONS
 /// [--tocolorspace T] -d float -o out.exr` computes, METHOD being `method`.
@@ -161,3 +160,4 @@ bool recipe_spec(const Recipe& recipe, OIIO::ImageSpec& spec, std::string& error
 bool recipe_images(const Recipe& recipe, std::vector<OIIO::ImageBuf>& images, std::string& error);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -13,14 +13,13 @@
 //  - The vector set must outlive the searcher (it is not copied).
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// `count` vectors of `dim` floats, row-major and contiguous.
 struct VectorSet {
@@ -103,3 +102,4 @@ float squared_distance(const float* a, const float* b, int dim);
 float squared_distance_below(const float* a, const float* b, int dim, float bound);
 
 } // namespace texsyn
+#pragma GCC visibility pop

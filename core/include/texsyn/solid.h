@@ -6,8 +6,6 @@
 // The result is a 3-D ImageBuf (spec.depth voxels deep).
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,7 +17,8 @@
 #include <texsyn/options.h>
 #include <texsyn/stop.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// The pyramids of the solid method (Heeger & Bergen 1995 §4).
 enum class SolidPyramid {
@@ -96,3 +95,4 @@ bool solid_synthesize(OIIO::ImageBuf& dst, const OIIO::ImageBuf& sample, const S
 OIIO::ImageBuf solid_synthesize(const OIIO::ImageBuf& sample, const SolidOptions& opt);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -10,11 +10,10 @@
 // sample's size, and it carries the synthesis's synth:* tags.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <OpenImageIO/imagebuf.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// How a normal map's vectors are stored: the first three channels hold a tangent-space
 /// normal encoded as 0.5 + 0.5 n (8-bit and float normal maps alike); the conventions differ
@@ -52,3 +51,4 @@ OIIO::ImageBuf apply_source_map(
     const OIIO::ImageBuf& map, const OIIO::ImageBuf& image, const ApplyMapOptions& opt = {});
 
 } // namespace texsyn
+#pragma GCC visibility pop

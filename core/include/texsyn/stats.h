@@ -7,8 +7,6 @@
 // what the sample would: the quantile tables are kept whole, never binned.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <string>
 #include <vector>
 
@@ -16,7 +14,8 @@
 #include <texsyn/histogram.h>
 #include <texsyn/pyramid.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// What match-texture imposes on one synthesized component: a decorrelated colour
 /// component ("pc0", "pc1", …), alpha ("A") or an extra channel (its own name).
@@ -73,3 +72,4 @@ bool parse_statistics(const std::string& bytes, const std::string& name, Texture
 bool is_analysis_filename(const std::string& filename);
 
 } // namespace texsyn
+#pragma GCC visibility pop

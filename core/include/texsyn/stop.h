@@ -4,11 +4,10 @@
 // parallel loops, so that a run ends within about a second of it at any size.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <atomic>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// A request to stop a run. Set it (to true, from any thread) and the run stops at its
 /// next check: the function fails with the message "stopped" and gives no result. The
@@ -22,3 +21,4 @@ inline bool stop_requested(const StopFlag* stop) noexcept
 }
 
 } // namespace texsyn
+#pragma GCC visibility pop

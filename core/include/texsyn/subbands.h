@@ -3,8 +3,6 @@
 // "synth" holds the result and whose further parts hold pyramid subbands.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <string>
 #include <vector>
 
@@ -12,7 +10,8 @@
 
 #include <texsyn/image.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// A named multi-channel image: one subband of one pyramid (for --subbands output).
 struct NamedImage {
@@ -31,3 +30,4 @@ bool write_subband_exr(const std::string& filename, const OIIO::ImageBuf& synth,
     const std::vector<NamedImage>& subbands, std::string& error);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -9,8 +9,6 @@
 // finest level has faces x 4^(levels-1) faces.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -24,7 +22,8 @@
 #include <texsyn/color.h>
 #include <texsyn/options.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// remesh=auto keeps meshes of fewer faces than this.
 constexpr size_t kAutoRemeshFaces = 100;
@@ -110,3 +109,4 @@ bool write_surface_ply(const std::string& path, const SurfaceTexture& texture,
     const std::vector<std::array<uint8_t, 3>>* display_rgb, std::string& error);
 
 } // namespace texsyn
+#pragma GCC visibility pop

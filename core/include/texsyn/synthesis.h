@@ -21,7 +21,6 @@
 #include <texsyn/choosy.h>
 #include <texsyn/color.h>
 #include <texsyn/error_text.h>
-#include <texsyn/export.h>
 #include <texsyn/feature_scale.h>
 #include <texsyn/fft.h>
 #include <texsyn/fill.h>

@@ -6,8 +6,6 @@
 // dst, scene-linear float in and out, bit-identical for a seed whatever nthreads is.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <string>
 #include <vector>
 
@@ -17,7 +15,8 @@
 #include <texsyn/stats.h>
 #include <texsyn/subbands.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 /// Checks options for transfer_synthesize: opt.validate(), and no size (the image gives
 /// the output's size). False with a message.
@@ -46,3 +45,4 @@ bool transfer_synthesize(OIIO::ImageBuf& dst, const TextureStatistics& sample,
     std::vector<NamedImage>* subbands = nullptr);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -16,8 +16,6 @@
 //  - Volumes hold scene-linear float colour, un-associated from alpha.
 #pragma once
 
-#include <texsyn/export.h>
-
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -28,7 +26,8 @@
 
 #include <texsyn/image.h>
 
-namespace TEXSYN_API texsyn {
+#pragma GCC visibility push(default) // exported: what this header declares
+namespace texsyn {
 
 class ColorConfig; // texsyn/color.h
 
@@ -150,3 +149,4 @@ bool write_volume_exr(
 std::string volume_exr_part_name(int z, int depth);
 
 } // namespace texsyn
+#pragma GCC visibility pop
