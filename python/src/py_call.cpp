@@ -21,8 +21,8 @@ namespace {
 // The keywords every generated function takes besides its method's options.
 const std::vector<std::string>& common_keywords()
 {
-    static const std::vector<std::string> names
-        = { "seed", "threads", "progress", "colorconfig", "iscolorspace", "tocolorspace" };
+    static const std::vector<std::string> names = { "seed", "threads", "max_memory", "progress",
+        "colorconfig", "iscolorspace", "tocolorspace" };
     return names;
 }
 
@@ -139,6 +139,8 @@ void read_keywords(Call& call, py::dict kwargs)
             call.seed = seed_keyword(value);
         else if (k == "threads")
             call.threads = threads_keyword(value);
+        else if (k == "max_memory")
+            call.max_memory = memory_keyword(value);
         else if (k == "progress")
             call.progress = py::reinterpret_borrow<py::object>(value);
         else if (k == "colorconfig")

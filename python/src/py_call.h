@@ -40,6 +40,7 @@ struct Call {
     std::shared_ptr<const ColorConfig> colors;
     uint64_t seed = 0;
     int threads = 0;
+    size_t max_memory = 0; ///< RunSettings::max_memory
     pybind11::object progress = pybind11::none();
     std::string tocolorspace;
     bool subbands = false;          ///< give the pyramid's subbands too (rows that have them)

@@ -123,6 +123,7 @@ py::object run_call(Call& call)
     RunSettings settings;
     settings.seed = call.seed;
     settings.nthreads = call.threads;
+    settings.max_memory = call.max_memory;
     settings.progress = control.progress();
     settings.stop = control.stop();
     settings.source_map = synthesizes_materials(m);

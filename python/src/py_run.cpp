@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include <texsyn/memory.h>
 #include <texsyn/methods.h>
 
 #include "py_errors.h"
@@ -106,6 +107,21 @@ uint64_t seed_keyword(py::handle value)
 int threads_keyword(py::handle value)
 {
     return int(int_keyword("threads", value, 0, max_threads));
+}
+
+size_t memory_keyword(py::handle value)
+{
+    if (value.is_none())
+        return 0;
+    if (py::isinstance<py::str>(value)) {
+        size_t bytes = 0;
+        std::string error;
+        if (!parse_memory_size(value.cast<std::string>(), bytes, error))
+            raise_error(ErrorKind::Value,
+                "max_memory=" + py::repr(value).cast<std::string>() + " : " + error);
+        return bytes;
+    }
+    return size_t(int_keyword("max_memory", value, 1, int64_t(1) << 60));
 }
 
 RunControl::RunControl(py::object callback)

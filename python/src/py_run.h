@@ -26,6 +26,10 @@ uint64_t seed_keyword(pybind11::handle value);
 /// ValueError otherwise.
 int threads_keyword(pybind11::handle value);
 
+/// max_memory= (RunSettings::max_memory): None (the process-wide limit), bytes as an
+/// integer, or a size as --max-memory takes it ("2G", "512M", "25%"); ValueError otherwise.
+size_t memory_keyword(pybind11::handle value);
+
 /// Releases the GIL for library work, like pybind11's gil_scoped_release, but never takes
 /// it back while the interpreter is finalizing: a thread that did (a daemon thread still in
 /// texsyn when Python exits) would be ended by pthread_exit inside a destructor, which ends

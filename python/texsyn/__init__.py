@@ -19,6 +19,9 @@ _P = _inspect.Parameter
 _COMMON = (
     ("seed", 0, "random seed; the same seed gives the same pixels at any threads="),
     ("threads", 0, "worker threads (0: one per core)"),
+    ("max_memory", None, "this run's memory budget: bytes, or a size such as \"2G\" or "
+                         "\"512M\"; work needing more is refused before it starts, whatever "
+                         "the rest of the process holds (None: texsyn's process-wide limit)"),
     ("progress", None, "a callable taking the fraction done (0..1), called on this thread "
                        "at most every 50 ms and at the end; an exception it raises stops "
                        "the run (Ctrl-C does too)"),

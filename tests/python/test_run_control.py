@@ -46,6 +46,18 @@ def test_seed_and_threads_take_what_the_tool_takes(cli):
     texsyn.cascade(size=(8, 8), seed=np.int64(3), threads=np.uint8(1))  # integers of numpy
 
 
+def test_max_memory_is_the_runs_own_budget(stucco):
+    # Work beyond the budget is refused before it starts; within it, it runs; sizes as
+    # --max-memory takes them, or bytes.
+    with pytest.raises(Exception, match="this run's budget is 64.0 MB"):
+        texsyn.pyramid(stucco, size=(4096, 4096), max_memory="64M")
+    out = texsyn.pyramid(stucco, size=(32, 32), iterations=1, max_memory=64 << 20)
+    assert out.shape == (32, 32, 3)
+    for bad in ("lots", "0", 0, -1, 1.5):
+        with pytest.raises(ValueError, match=r"^max_memory="):
+            texsyn.pyramid(stucco, size=(32, 32), max_memory=bad)
+
+
 def test_recipe_run_checks_threads(samples):
     recipe = texsyn.Recipe.load(f"{samples['stucco.png']}.texsyn?size=16x16&iterations=1")
     for bad in (-1, 1025, 2.0):

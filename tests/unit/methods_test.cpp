@@ -4,6 +4,7 @@
 // hands it.
 #include <texsyn/choosy.h>
 #include <texsyn/material.h>
+#include <texsyn/memory.h>
 #include <texsyn/methods.h>
 #include <texsyn/pyramid_synthesis.h>
 #include <texsyn/surface.h>
@@ -171,6 +172,35 @@ TEST(Methods, InputsAreCountedFromTheRowAndTheOptions)
     EXPECT_FALSE(find_method("transfer")->accepts_analysis(0));
     EXPECT_TRUE(find_method("transfer")->accepts_analysis(1));
     EXPECT_FALSE(find_method("choosy")->accepts_analysis(0));
+}
+
+// A run's memory budget (RunSettings::max_memory) is its own: it refuses work needing
+// more than the budget, and admits work within it even where the process-wide limit, less
+// what the process (a host) holds, leaves nothing.
+TEST(Methods, ARunsMemoryBudgetIsItsOwnWhateverTheProcessHolds)
+{
+    const OIIO::ImageBuf image = grey_image(64, 64);
+    const Method& pyramid = *find_method("pyramid");
+    std::string error;
+    MethodOptions large = pyramid.defaults(), small = pyramid.defaults();
+    ASSERT_TRUE(large.apply("size=4096x4096", error)) << error;
+    ASSERT_TRUE(small.apply("size=64x64", error)) << error;
+    const std::vector<MethodInput> inputs { { &image, nullptr, "a.png" } };
+    RunSettings budget;
+    budget.max_memory = size_t(64) << 20;
+    MethodResult result;
+    EXPECT_FALSE(run_method(pyramid, large, inputs, {}, budget, result, error));
+    EXPECT_NE(error.find("this run's budget is 64.0 MB"), std::string::npos) << error;
+
+    // The process-wide limit below what the process holds refuses everything, but not a
+    // run with a budget of its own.
+    set_memory_limit(size_t(1) << 20);
+    EXPECT_FALSE(run_method(pyramid, small, inputs, {}, {}, result, error));
+    EXPECT_NE(error.find("of which the process holds"), std::string::npos) << error;
+    EXPECT_TRUE(run_method(pyramid, small, inputs, {}, budget, result, error)) << error;
+    // The budget ended with its run.
+    EXPECT_FALSE(check_memory(size_t(2) << 20, "after the run", error));
+    set_memory_limit(0);
 }
 
 // run_method checks options, inputs and files for every front end before the row runs.

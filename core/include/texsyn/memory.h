@@ -29,10 +29,13 @@ size_t memory_available();
 bool parse_memory_size(const std::string& text, size_t& bytes, std::string& error);
 
 /// False, with "WHAT would need about N of memory (M available, limit L: --max-memory)",
-/// if `need` bytes exceed memory_available().
+/// if `need` bytes exceed memory_available(). Inside run_method() with a budget
+/// (RunSettings::max_memory), on the thread that called it, the budget takes the place of
+/// memory_available(): what the process already holds does not count against it.
 bool check_memory(size_t need, const std::string& what, std::string& error);
 
 /// "1.5 GB": bytes in binary units with one decimal.
 std::string format_bytes(double bytes);
 
 } // namespace texsyn
+#pragma GCC visibility pop

@@ -190,6 +190,10 @@ struct RunSettings {
     /// Methods that copy sample pixels give their source map in MethodResult::files
     /// ("map") even when map= names no file (a material set needs it).
     bool source_map = false;
+    /// This run's memory budget in bytes: work needing more is refused before it is
+    /// allocated, whatever the rest of the process (a host) holds. 0: the process-wide limit
+    /// less what the process holds (memory.h: check_memory).
+    size_t max_memory = 0;
 };
 
 /// Something a user should know about a run that succeeded (a front end shows it even when

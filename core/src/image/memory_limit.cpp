@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <texsyn/memory.h>
 
+#include "memory_pvt.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -78,17 +80,28 @@ void set_memory_limit(size_t bytes)
     user_limit.store(bytes);
 }
 
+namespace {
+
+// The budget of the run on this thread (detail::RunMemoryBudget), 0 for none.
+thread_local size_t run_budget = 0;
+
+// What the address-space limit (ulimit -v) leaves mapping, SIZE_MAX without one.
+size_t address_space_left()
+{
+    struct rlimit as { };
+    if (::getrlimit(RLIMIT_AS, &as) != 0 || as.rlim_cur == RLIM_INFINITY)
+        return SIZE_MAX;
+    const size_t mapped = statm_bytes(0);
+    return size_t(as.rlim_cur) > mapped ? size_t(as.rlim_cur) - mapped : 0;
+}
+
+} // namespace
+
 size_t memory_available()
 {
     const size_t limit = memory_limit();
-    size_t available = limit ? limit - std::min(limit, statm_bytes(1)) : SIZE_MAX;
-    struct rlimit as { };
-    if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
-        const size_t mapped = statm_bytes(0);
-        const size_t left = size_t(as.rlim_cur) > mapped ? size_t(as.rlim_cur) - mapped : 0;
-        available = std::min(available, left);
-    }
-    return available;
+    const size_t available = limit ? limit - std::min(limit, statm_bytes(1)) : SIZE_MAX;
+    return std::min(available, address_space_left());
 }
 
 bool parse_memory_size(const std::string& text, size_t& bytes, std::string& error)
@@ -152,6 +165,18 @@ std::string format_bytes(double bytes)
 
 bool check_memory(size_t need, const std::string& what, std::string& error)
 {
+    if (run_budget) {
+        const size_t available = std::min(run_budget, address_space_left());
+        if (need <= available)
+            return true;
+        error = what + " would need about " + format_bytes(double(need))
+            + " of memory (this run's budget is " + format_bytes(double(run_budget))
+            + (available < run_budget
+                    ? ", and the address-space limit leaves " + format_bytes(double(available))
+                    : std::string())
+            + ": RunSettings::max_memory)";
+        return false;
+    }
     const size_t available = memory_available();
     if (need <= available)
         return true;
@@ -163,5 +188,21 @@ bool check_memory(size_t need, const std::string& what, std::string& error)
         + format_bytes(double(statm_bytes(1))) + ": see --max-memory or $TEXSYN_MAX_MEMORY)";
     return false;
 }
+
+namespace detail {
+
+RunMemoryBudget::RunMemoryBudget(size_t bytes)
+    : previous_(run_budget)
+{
+    if (bytes)
+        run_budget = bytes;
+}
+
+RunMemoryBudget::~RunMemoryBudget()
+{
+    run_budget = previous_;
+}
+
+} // namespace detail
 
 } // namespace texsyn

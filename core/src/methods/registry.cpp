@@ -13,6 +13,7 @@
 #include <texsyn/homogeneity.h>
 #include <texsyn/stats.h>
 
+#include "image/memory_pvt.h"
 #include "result_layout_pvt.h"
 
 namespace texsyn {
@@ -218,6 +219,7 @@ bool run_method(const Method& method, const MethodOptions& options,
             return false;
         }
     try {
+        const detail::RunMemoryBudget budget(settings.max_memory);
         if (!method.run(options, inputs, files, settings, result, error))
             return false;
         warn_of_uneven_lighting(options, inputs, result);
