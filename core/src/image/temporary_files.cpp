@@ -140,16 +140,21 @@ std::string temporary_path_for(const std::string& filename)
             stem.resize(255 - 1 - std::min<size_t>(tag.size(), 254));
         path = (p.parent_path() / ("." + stem + tag)).string();
         // Created here, exclusively and not through a link, so that the writer opens a
-        // regular file of ours; a name someone else made is skipped, never followed.
+        // regular file of ours; a name someone else made is skipped, never followed. It is
+        // registered first: a signal that arrives as the file appears still finds it (the
+        // name, with this process's pid and a random part, can be no one else's file).
+        std::error_code ec;
+        const std::string absolute = fs::absolute(path, ec).string();
+        register_live(absolute);
         const int fd
             = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0) {
             ::close(fd);
-            std::error_code ec;
-            register_live(fs::absolute(path, ec).string());
             return path;
         }
-        if (errno != EEXIST)
+        const int why = errno;
+        unregister_live(absolute);
+        if (why != EEXIST)
             return path; // the folder refuses files: so will the writer, with its reason
     }
     return path + "/"; // 64 names taken: a path no writer can create
