@@ -246,6 +246,32 @@ TEST(StructureDistance, AutocorrelationWindowOfACheckerboard)
         EXPECT_EQ(v, 0.0);
 }
 
+TEST(StructureDistance, RepetitionExcessSeesCopiesSideBySideAndNotANewArrangement)
+{
+    for (const char* name : { "grass.png", "rust.png", "pebbles.png", "flowers.png" }) {
+        SCOPED_TRACE(name);
+        // The top-left quarter of the sample against: the whole sample (the same texture,
+        // arranged as nature arranged it beyond the crop), the quarter pasted side by side
+        // (two copies each way), and the whole sample's pixels shuffled.
+        const OIIO::ImageBuf whole = test::linear_sample(name);
+        const int w = whole.spec().width / 2, h = whole.spec().height / 2;
+        const OIIO::ImageBuf crop = test::linear_crop(name, w, h);
+        const PlanarImage planes = test::planes_of(crop);
+        const double arranged = detail::repetition_excess(test::planes_of(whole), planes, 1);
+        const double pasted
+            = detail::repetition_excess(test::planes_of(test::tiled_twice(crop)), planes, 1);
+        const double shuffle = detail::repetition_excess(
+            test::planes_of(test::shuffled(whole, 2 * w, 2 * h)), planes, 1);
+        // A new arrangement of few features (flowers: 28-pixel flowers, 0.12) varies by
+        // about the feature size over the side; the copies give 0.77 to 0.95.
+        EXPECT_LT(arranged, 0.15);
+        EXPECT_LT(shuffle, 0.05);
+        EXPECT_GT(pasted, 0.6) << arranged << " arranged, " << shuffle << " shuffled";
+        EXPECT_EQ(
+            detail::repetition_excess(test::planes_of(test::tiled_twice(crop)), planes, 3), pasted);
+    }
+}
+
 TEST(StructureDistance, NoneToItselfSmallToItsCopiesLargeToItsShuffle)
 {
     for (const char* name : { "paper_crinkled.png", "rust.png", "bricks.png" }) {

@@ -2,6 +2,7 @@
 // The patch method: PatchMatch against the exhaustive search, the vote, the histogram kept,
 // the repetition penalty, determinism, the seams, bad input, and the structure of bricks,
 // tiles, weave, wood and flowers against the neighbourhood method's.
+#include <texsyn/feature_scale.h>
 #include <texsyn/fill.h>
 #include <texsyn/neighborhood.h>
 #include <texsyn/patch.h>
@@ -16,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "feature_scale/structure_distance_pvt.h"
 #include "patch/patch_pvt.h"
 #include "structure_metric.h"
 #include "test_metrics.h"
@@ -420,6 +422,48 @@ TEST(PatchSynthesize, ASmallSampleKeepsTheNearerOfTwoLevelCounts)
         patch_synthesize(linear_sample("bricks.png"), options(256, 256), nullptr, nullptr, &bricks)
             .has_error());
     EXPECT_EQ(bricks.schedule.find("kept over"), std::string::npos) << bricks.schedule;
+}
+
+TEST(PatchSynthesize, ASampleAtTheLeastLevelsTriesOneMoreAndKeepsTheOneThatDoesNotRepeat)
+{
+    // 256-pixel samples at 512²: the trial is the output itself, so the two level counts'
+    // outputs are the trial's. 3 levels are the least; 4 lay the sample out from a coarser
+    // level, nearer its arrangement, but on some samples copy blocks that recur.
+    bool repetition_decided = false;
+    for (const char* name : { "grass.png", "pebbles.png", "flowers.png" }) {
+        SCOPED_TRACE(name);
+        const OIIO::ImageBuf sample = linear_sample(name);
+        const PlanarImage planes = planes_of(sample);
+        const double feature = estimate_feature_scale(planes, 1).size;
+        PatchReport report;
+        const OIIO::ImageBuf chosen
+            = patch_synthesize(sample, options(512, 512), nullptr, nullptr, &report);
+        ASSERT_FALSE(chosen.has_error()) << chosen.geterror();
+        ASSERT_NE(report.schedule.find("levels kept over"), std::string::npos) << report.schedule;
+        ASSERT_TRUE(report.levels == 3 || report.levels == 4) << report.schedule;
+        double distance[2], repetition[2];
+        std::string hash[2];
+        for (int i = 0; i < 2; ++i) {
+            PatchOptions opt = options(512, 512);
+            opt.levels = 3 + i;
+            const OIIO::ImageBuf given = patch_synthesize(sample, opt);
+            ASSERT_FALSE(given.has_error()) << given.geterror();
+            hash[i] = pixel_hash(given);
+            distance[i] = detail::structure_distance(planes_of(given), planes, feature, 1);
+            repetition[i] = detail::repetition_excess(planes_of(given), planes, 1);
+        }
+        const int kept = report.levels - 3, other = 1 - kept;
+        EXPECT_EQ(pixel_hash(chosen), hash[kept]);
+        if (std::max(repetition[0], repetition[1]) > 0.1) {
+            repetition_decided = true;
+            EXPECT_LT(repetition[kept], repetition[other]) << report.schedule;
+            EXPECT_NE(report.schedule.find("which repeats itself"), std::string::npos);
+        } else {
+            EXPECT_LE(distance[kept], distance[other]) << report.schedule;
+        }
+    }
+    // At least one of the three is one where the deeper schedule repeats (grass does).
+    EXPECT_TRUE(repetition_decided);
 }
 
 namespace {

@@ -96,6 +96,24 @@ std::vector<double> autocorrelation_window(const Plane& plane, int radius, int n
     return window;
 }
 
+double autocorrelation_ring_max(const Plane& plane, double inner, double outer, int nthreads)
+{
+    const int rx = std::min(int(outer), plane.width() / 2);
+    const int ry = std::min(int(outer), plane.height() / 2);
+    const ShiftProducts products(plane, nthreads);
+    const double zero = products.at(0, 0);
+    double most = 0.0;
+    if (!(zero > 0.0))
+        return most;
+    for (int dy = -ry; dy <= ry; ++dy)
+        for (int dx = -rx; dx <= rx; ++dx) {
+            const double r = std::sqrt(double(dx) * dx + double(dy) * dy);
+            if (r >= inner && r <= outer)
+                most = std::max(most, products.at(dx, dy) / zero);
+        }
+    return most;
+}
+
 double profile_period(const std::vector<double>& r, double& strength)
 {
     struct Peak {

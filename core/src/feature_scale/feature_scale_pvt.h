@@ -28,6 +28,11 @@ void axis_autocorrelation(
 /// centre; all zeros for a constant plane.
 std::vector<double> autocorrelation_window(const Plane& plane, int radius, int nthreads);
 
+/// The largest normalised linear autocorrelation of `plane` at a shift whose length is
+/// between `inner` and `outer` pixels and whose components are at most half the plane's
+/// sides; 0 if there is none or the plane is constant.
+double autocorrelation_ring_max(const Plane& plane, double inner, double outer, int nthreads);
+
 /// The repeat of a profile from axis_autocorrelation (FeatureScale::period_x's rule), with
 /// sub-pixel precision; 0 with `strength` 0 if there is none.
 double profile_period(const std::vector<double>& profile, double& strength);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The structure distance: autocorrelation windows compared.
+// The structure distance (autocorrelation windows compared) and the repetition excess.
 #include "structure_distance_pvt.h"
 
 #include <algorithm>
@@ -32,6 +32,18 @@ double structure_distance(
     for (size_t i = 0; i < wa.size(); ++i)
         sum += (wa[i] - wb[i]) * (wa[i] - wb[i]);
     return std::sqrt(sum / double(wa.size()));
+}
+
+double repetition_excess(const PlanarImage& image, const PlanarImage& sample, int nthreads)
+{
+    int image_factor = 1, sample_factor = 1;
+    const Plane a = measured_luminance(image, nthreads, image_factor);
+    const Plane b = measured_luminance(sample, nthreads, sample_factor);
+    const double side = std::min(b.width(), b.height());
+    const double own = autocorrelation_ring_max(b, 0.25 * side, 0.5 * side, nthreads);
+    const double scaled = side * sample_factor / image_factor;
+    const double repeat = autocorrelation_ring_max(a, 0.5 * scaled, 1.5 * scaled, nthreads);
+    return std::max(0.0, repeat - own);
 }
 
 } // namespace texsyn::detail

@@ -24,7 +24,8 @@ const OptionTable<PatchOptions>& PatchOptions::table()
         t.integer("levels", &O::levels, 0, kMaxLevels,
              "Gaussian pyramid levels, synthesized coarse to fine; 0 = from the sample's "
              "feature size (its features about one patch wide at the coarsest level; a small "
-             "sample also tries one level fewer and keeps the result nearer its arrangement)")
+             "sample also tries one level more or fewer and keeps the result nearer its "
+             "arrangement that does not repeat itself)")
             .shared();
         detail::add_patch_schedule(t, kMaxLevels,
             "11,7 (smaller for a sample or output under 33 px)",

@@ -65,7 +65,12 @@ int automatic_levels(int side, const FeatureScale& scale, int largest_patch, std
 
 int alternative_levels(int side, const FeatureScale& scale, int levels)
 {
-    return !scale.periodic() && side <= kMaxTrialSide && levels > kMinLevels ? levels - 1 : 0;
+    if (scale.periodic() || side > kMaxTrialSide)
+        return 0;
+    if (levels > kMinLevels)
+        return levels - 1;
+    const int least = std::max(kMinCoarsestSide, side / kMaxReduction);
+    return levels == kMinLevels && (side >> levels) >= least ? levels + 1 : 0;
 }
 
 } // namespace texsyn::detail

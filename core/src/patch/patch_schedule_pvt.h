@@ -31,12 +31,13 @@ int automatic_iterations(int level, int levels);
 /// 11-pixel patches of full-resolution noise.
 int automatic_levels(int side, const FeatureScale& scale, int largest_patch, std::string& reason);
 
-/// The other level count worth trying when the automatic one is `levels` (0 if none): one
-/// fewer for a sample that does not repeat, whose shorter side is at most 512 pixels and
-/// whose levels are more than the least (3). Such a sample holds few of its features, and
-/// one level more or fewer decides whether they are laid out as the sample lays them or
-/// merged into streaks; which does, the sample alone does not say (patch_synthesize
-/// tries both).
+/// The other level count worth trying when the automatic one is `levels` (0 if none), for
+/// a sample that does not repeat and whose shorter side is at most 512 pixels: one fewer
+/// where `levels` is more than the least (3); one more where it is the least and the
+/// coarsest level would still keep what automatic_levels asks of it. Such a sample holds
+/// few of its features, and one level more or fewer decides whether they are laid out as
+/// the sample lays them, merged into streaks, or copied in blocks that repeat; which, the
+/// sample alone does not say (patch_synthesize tries both).
 int alternative_levels(int side, const FeatureScale& scale, int levels);
 
 } // namespace texsyn::detail

@@ -271,52 +271,90 @@ Copied copied(const Copies& copies, const PlanarImage& in, int w, int h)
     return c;
 }
 
+// A trial of one schedule: how far its arrangement is from the sample's
+// (structure_distance), and how much it repeats itself at the sample's scale
+// (repetition_excess).
+struct Trial {
+    double distance = 0.0, repetition = 0.0;
+};
+
+// A repetition excess above this shows as the same block recurring across the output (the
+// sample pasted side by side gives 0.5 or more; new arrangements about 0)…
+constexpr double kMaxRepetition = 0.1;
+
+// …or above the autocorrelation's own noise on the trial, if that is more: a trial `side`
+// pixels across holds about (side / feature)² independent features, and an autocorrelation
+// measured over n of them varies by about 1/√n from one arrangement to the next.
+double repetition_limit(double feature, int side)
+{
+    return std::max(kMaxRepetition, feature / double(side));
+}
+
+// Whether `a` is the better of two trials: the one that repeats itself less where either
+// repeats beyond `limit`, else the nearer arrangement.
+bool better_trial(const Trial& a, const Trial& b, double limit)
+{
+    if (std::max(a.repetition, b.repetition) > limit)
+        return a.repetition < b.repetition;
+    return a.distance < b.distance;
+}
+
+Trial trial_of(
+    const Copies& copies, const PlanarImage& in, int w, int h, double feature, int nthreads)
+{
+    const PlanarImage image = copied(copies, in, w, h).image;
+    return { detail::structure_distance(image, in, feature, nthreads),
+        detail::repetition_excess(image, in, nthreads) };
+}
+
 // The copies of the synthesis with opt's schedule, or, where the automatic levels could as
-// well be one fewer (patch_schedule_pvt.h: alternative_levels), of whichever of the two
-// arranges the sample's features nearer the way the sample does: both run on a trial
-// output (kTrialScale times the sample's size, or the output itself where that is
-// smaller), compared by structure_distance; `schedule` then says which was kept and why,
-// and `opt` holds the kept levels and iterations.
+// well be one more or fewer (patch_schedule_pvt.h: alternative_levels), of whichever of the
+// two arranges the sample's features nearer the way the sample does without repeating
+// itself: both run on a trial output (kTrialScale times the sample's size, or the output
+// itself where that is smaller) and are compared as Trial says; `schedule` then says which
+// was kept and why, and `opt` holds the kept levels and iterations.
 Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
     const FeatureScale& scale, bool automatic_levels, PatchOptions& opt, std::string& schedule)
 {
     const int sw = in.width(), sh = in.height();
-    detail::SampleLevels sample(
-        planes, opt.levels, opt.isotropic != 0, opt.patch.front(), opt.coherence, opt.nthreads);
-    const int fewer
+    const int other
         = automatic_levels ? detail::alternative_levels(std::min(sw, sh), scale, opt.levels) : 0;
-    PatchOptions deeper = opt;
-    deeper.width = std::min(opt.width, int(kTrialScale * sw));
-    deeper.height = std::min(opt.height, int(kTrialScale * sh));
-    if (fewer == 0
-        || levels_that_fit(sw, sh, deeper.width, deeper.height, opt.levels, opt) < opt.levels)
+    const int deepest = std::max(opt.levels, other);
+    detail::SampleLevels sample(
+        planes, deepest, opt.isotropic != 0, opt.patch.front(), opt.coherence, opt.nthreads);
+    PatchOptions first = opt; // the automatic schedule at the trial's size
+    first.width = std::min(opt.width, int(kTrialScale * sw));
+    first.height = std::min(opt.height, int(kTrialScale * sh));
+    if (other == 0 || levels_that_fit(sw, sh, first.width, first.height, deepest, opt) < deepest)
         return optimize(sample, opt, 0.0, 1.0);
-    const bool final_size = deeper.width == opt.width && deeper.height == opt.height;
+    const bool final_size = first.width == opt.width && first.height == opt.height;
     const double span = final_size ? 0.5 : 0.25;
-    PatchOptions shallower = deeper;
-    shallower.levels = fewer;
-    shallower.iterations.clear();
-    for (int l = 0; l < fewer; ++l)
-        shallower.iterations.push_back(opt.iterations_at(l));
-    Copies a = optimize(sample, deeper, 0.0, span);
-    Copies b = optimize(sample, shallower, span, span);
-    const double da = detail::structure_distance(
-        copied(a, in, deeper.width, deeper.height).image, in, scale.size, opt.nthreads);
-    const double db = detail::structure_distance(
-        copied(b, in, deeper.width, deeper.height).image, in, scale.size, opt.nthreads);
-    const bool keep_fewer = db < da;
-    char why[200];
+    PatchOptions second = first; // the other level count
+    second.levels = other;
+    second.iterations.clear();
+    for (int l = 0; l < other; ++l)
+        second.iterations.push_back(opt.iterations_at(l));
+    Copies a = optimize(sample, first, 0.0, span);
+    Copies b = optimize(sample, second, span, span);
+    const Trial ta = trial_of(a, in, first.width, first.height, scale.size, opt.nthreads);
+    const Trial tb = trial_of(b, in, first.width, first.height, scale.size, opt.nthreads);
+    const double limit = repetition_limit(scale.size, std::min(first.width, first.height));
+    const bool keep_other = better_trial(tb, ta, limit);
+    const Trial& kept = keep_other ? tb : ta;
+    const Trial& dropped = keep_other ? ta : tb;
+    char why[240];
     std::snprintf(why, sizeof(why),
-        "; %d levels kept over %d: structure distance %.3f against %.3f on a %dx%d trial",
-        keep_fewer ? fewer : opt.levels, keep_fewer ? opt.levels : fewer, keep_fewer ? db : da,
-        keep_fewer ? da : db, deeper.width, deeper.height);
+        "; %d levels kept over %d: structure distance %.3f against %.3f%s on a %dx%d trial",
+        keep_other ? other : opt.levels, keep_other ? opt.levels : other, kept.distance,
+        dropped.distance, dropped.repetition > limit ? ", which repeats itself" : "", first.width,
+        first.height);
     schedule += why;
-    if (keep_fewer) {
-        opt.levels = shallower.levels;
-        opt.iterations = shallower.iterations;
+    if (keep_other) {
+        opt.levels = second.levels;
+        opt.iterations = second.iterations;
     }
     if (final_size)
-        return keep_fewer ? b : a;
+        return keep_other ? b : a;
     return optimize(sample, opt, 2 * span, 1.0 - 2 * span);
 }
 
