@@ -15,7 +15,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/options.h>
-#include <texsyn/stop.h>
+#include <texsyn/run_controls.h>
 
 #pragma GCC visibility push(default) // exported: what this header declares
 namespace texsyn {
@@ -53,7 +53,7 @@ enum class CascadeTransfer {
 /// Options of the cascade. Per-level lists (iterations, map, r, kernel, angle, noise) run
 /// coarsest level first (level 0 is the coarsest); levels missing from a list repeat its
 /// last value.
-struct CascadeOptions {
+struct CascadeOptions : RunControls {
     /// Output size (the finest level); 0x0 = the initial image's size, or 512x512 without one.
     int width = 0;
     int height = 0;
@@ -81,13 +81,6 @@ struct CascadeOptions {
     /// A colour ramp: r,g,b triples (scene-linear), evenly spaced stops from value 0 to 1;
     /// empty = the lattice itself, one channel "Y".
     std::vector<float> ramp;
-    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
-    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
-    /// Called with the fraction done (0..1) after each iteration, from the calling thread;
-    /// may be empty. Not an option: it never changes the result.
-    std::function<void(float)> progress;
-    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
-    const StopFlag* stop = nullptr;
 
     /// The table behind `--cascade:name=value`, synth:options and the docs.
     static const OptionTable<CascadeOptions>& table();

@@ -14,8 +14,8 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/options.h>
+#include <texsyn/run_controls.h>
 #include <texsyn/source_map.h>
-#include <texsyn/stop.h>
 
 #pragma GCC visibility push(default) // exported: what this header declares
 namespace texsyn {
@@ -34,7 +34,7 @@ enum class ChoosySearch {
 /// Options of choosy sampling. Defaults are the paper's (§5: four levels, one iteration
 /// per level, the 2-distant neighbourhood; §6.2: 20 dimensions) except `isotropic`, which
 /// is 0 on images.
-struct ChoosyOptions {
+struct ChoosyOptions : RunControls {
     int width = 0; ///< output size; 0x0 = the sample's size (after the crop, see below)
     int height = 0;
     int levels = 4; ///< Gaussian/Laplacian pyramid levels
@@ -59,12 +59,6 @@ struct ChoosyOptions {
     /// kdtree: nanoflann's approximation factor (0 = exact in PCA space). 30 was measured
     /// 4x faster than 0 with the same histogram match and look (docs/choosy.md).
     float eps = 30.0f;
-    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
-    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
-    /// Called with the fraction done (0..1) from the calling thread; may be empty.
-    std::function<void(float)> progress;
-    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
-    const StopFlag* stop = nullptr;
 
     /// The table behind `--choosy:name=value`, recipes, synth:options and the docs.
     static const OptionTable<ChoosyOptions>& table();

@@ -18,7 +18,7 @@
 #include <texsyn/feature_scale.h>
 #include <texsyn/options.h>
 #include <texsyn/patch.h>
-#include <texsyn/stop.h>
+#include <texsyn/run_controls.h>
 
 #pragma GCC visibility push(default) // exported: what this header declares
 namespace texsyn {
@@ -33,7 +33,7 @@ enum class FillOutline {
 };
 
 /// Options of a fill.
-struct FillOptions {
+struct FillOptions : RunControls {
     /// Gaussian pyramid levels, filled coarse to fine; 0 = from each hole's thickness (at
     /// most three of the largest patches at the coarsest level; at least 3 where the image
     /// is large enough).
@@ -63,12 +63,6 @@ struct FillOptions {
     /// from where it is lit alike; the copies are still the image's own pixels (outline=
     /// match then relights them where they land).
     int flatten = 0;
-    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
-    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
-    /// Called with the fraction done (0..1) from the calling thread; may be empty.
-    std::function<void(float)> progress;
-    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
-    const StopFlag* stop = nullptr;
 
     /// The table behind `--fill:name=value`, recipes, synth:options and the docs.
     static const OptionTable<FillOptions>& table();

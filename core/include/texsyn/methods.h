@@ -29,7 +29,7 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/options.h>
-#include <texsyn/stop.h>
+#include <texsyn/run_controls.h>
 #include <texsyn/subbands.h>
 
 #pragma GCC visibility push(default) // exported: what this header declares
@@ -175,17 +175,10 @@ constexpr int64_t max_seed = 2147483647;
 /// cores).
 constexpr int max_threads = 1024;
 
-/// What the front end sets besides the options; none of it changes the result.
-struct RunSettings {
-    uint64_t seed = 0;
-    int nthreads = 0; ///< 0 = OIIO's default
-    /// Called with the fraction done (0..1) from the calling thread, outside parallel
-    /// loops; may be empty. It may throw to stop the run (a front end's cancellation):
-    /// run_method() then returns false with the exception's message and a partial result.
-    std::function<void(float)> progress;
-    /// Set from any thread to stop the run within about a second (stop.h): run_method()
-    /// then returns false with "stopped". May be null.
-    const StopFlag* stop = nullptr;
+/// What the front end sets besides the options: the run's controls (run_controls.h: seed,
+/// threads, progress, stop; run_method gives them to the method's options), what it wants
+/// back, and the run's memory budget. Only the seed changes the result.
+struct RunSettings : RunControls {
     bool subbands = false; ///< fill MethodResult::subbands (methods that have them)
     /// Methods that copy sample pixels give their source map in MethodResult::files
     /// ("map") even when map= names no file (a material set needs it).

@@ -15,9 +15,9 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <texsyn/options.h>
+#include <texsyn/run_controls.h>
 #include <texsyn/search.h>
 #include <texsyn/source_map.h>
-#include <texsyn/stop.h>
 
 #pragma GCC visibility push(default) // exported: what this header declares
 namespace texsyn {
@@ -33,7 +33,7 @@ enum class NeighborhoodShape {
 };
 
 /// Options of the neighbourhood method. Defaults are Wei & Levoy's where they give one.
-struct NeighborhoodOptions {
+struct NeighborhoodOptions : RunControls {
     int width = 0; ///< output size; 0x0 = the sample's size
     int height = 0;
     int levels = 4; ///< Gaussian pyramid levels (1 = single resolution)
@@ -69,12 +69,6 @@ struct NeighborhoodOptions {
     /// The result's features this many times as large as the sample's, 0.25..4: the sample
     /// is resampled by it first (its source map then refers to the resampled sample).
     float scale = 1.0f;
-    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
-    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
-    /// Called with the fraction done (0..1) from the calling thread; may be empty.
-    std::function<void(float)> progress;
-    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
-    const StopFlag* stop = nullptr;
 
     /// The table behind `--neighborhood:name=value`, recipes, synth:options and the docs.
     static const OptionTable<NeighborhoodOptions>& table();

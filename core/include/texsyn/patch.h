@@ -19,8 +19,8 @@
 
 #include <texsyn/feature_scale.h>
 #include <texsyn/options.h>
+#include <texsyn/run_controls.h>
 #include <texsyn/source_map.h>
-#include <texsyn/stop.h>
 
 #pragma GCC visibility push(default) // exported: what this header declares
 namespace texsyn {
@@ -40,7 +40,7 @@ enum class PatchWrap { Both, X, Y, None };
 /// Options of the patch method. Left automatic (levels 0, patch and iterations empty), the
 /// schedule tunes itself to the sample (feature_scale.h): the result's synth:options
 /// records what was chosen.
-struct PatchOptions {
+struct PatchOptions : RunControls {
     int width = 0; ///< output size; 0x0 = the sample's size
     int height = 0;
     /// Gaussian pyramid levels, synthesized coarse to fine; 0 = chosen from the sample's
@@ -82,12 +82,6 @@ struct PatchOptions {
     /// The result's features this many times as large as the sample's, 0.25..4: the sample
     /// is resampled by it first (its source map then refers to the resampled sample).
     float scale = 1.0f;
-    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
-    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
-    /// Called with the fraction done (0..1) from the calling thread; may be empty.
-    std::function<void(float)> progress;
-    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
-    const StopFlag* stop = nullptr;
 
     /// The table behind `--patch:name=value`, recipes, synth:options and the docs.
     static const OptionTable<PatchOptions>& table();

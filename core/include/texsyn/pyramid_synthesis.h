@@ -18,15 +18,15 @@
 #include <texsyn/histogram.h>
 #include <texsyn/options.h>
 #include <texsyn/pyramid.h>
+#include <texsyn/run_controls.h>
 #include <texsyn/stats.h>
-#include <texsyn/stop.h>
 #include <texsyn/subbands.h>
 
 #pragma GCC visibility push(default) // exported: what this header declares
 namespace texsyn {
 
 /// Options of the pyramid method. Defaults are Heeger & Bergen's.
-struct PyramidOptions {
+struct PyramidOptions : RunControls {
     int width = 0; ///< output size; 0x0 = the sample's size
     int height = 0;
     int iterations = 5; ///< §3.3: "about 5 iterations"
@@ -46,13 +46,6 @@ struct PyramidOptions {
     /// 1: divide the sample by its fitted low-order illumination before analysis
     /// (flatten_illumination, homogeneity.h; Heeger & Bergen 1995 §6). Not the paper's: 0.
     int flatten = 0;
-    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
-    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
-    /// Called with the fraction done (0..1) after each iteration of each channel, from the
-    /// calling thread; may be empty. Not an option: it never changes the result.
-    std::function<void(float)> progress;
-    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
-    const StopFlag* stop = nullptr;
 
     /// The table behind `--pyramid:name=value`, recipes, synth:options and the docs.
     static const OptionTable<PyramidOptions>& table();

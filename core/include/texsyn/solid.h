@@ -15,7 +15,7 @@
 #include <texsyn/fft.h>
 #include <texsyn/histogram.h>
 #include <texsyn/options.h>
-#include <texsyn/stop.h>
+#include <texsyn/run_controls.h>
 
 #pragma GCC visibility push(default) // exported: what this header declares
 namespace texsyn {
@@ -34,7 +34,7 @@ enum class SolidPyramid {
 const char* solid_pyramid_name(SolidPyramid kind);
 
 /// Options of the solid method. Defaults are Heeger & Bergen's.
-struct SolidOptions {
+struct SolidOptions : RunControls {
     int width = 0; ///< block size; 0x0x0 = the sample's width x height x the smaller of them
     int height = 0;
     int depth = 0;
@@ -48,13 +48,6 @@ struct SolidOptions {
     /// 1: the sample's low-order lighting is divided out before analysis
     /// (flatten_illumination, homogeneity.h; Heeger & Bergen 1995 §6).
     int flatten = 0;
-    uint64_t seed = 0; ///< set by the tool's --seed, not a `:name=` option
-    int nthreads = 0;  ///< 0 = OIIO's default; never changes the result
-    /// Called with the fraction done (0..1) after each iteration of each channel, from the
-    /// calling thread; may be empty. Not an option: it never changes the result.
-    std::function<void(float)> progress;
-    /// Set from any thread to stop the run (stop.h); may be null. Not an option.
-    const StopFlag* stop = nullptr;
 
     /// The table behind `--solid:name=value`, synth:options and the docs.
     static const OptionTable<SolidOptions>& table();

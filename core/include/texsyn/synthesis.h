@@ -40,6 +40,7 @@
 #include <texsyn/pyramid_synthesis.h>
 #include <texsyn/random.h>
 #include <texsyn/recipe.h>
+#include <texsyn/run_controls.h>
 #include <texsyn/search.h>
 #include <texsyn/solid.h>
 #include <texsyn/source_map.h>

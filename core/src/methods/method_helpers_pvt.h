@@ -147,14 +147,10 @@ const Options& options_of(const MethodOptions& options)
     return *o;
 }
 
-/// The front ends' seed, threads, progress and stop flag in a method's options struct.
-template <class Options>
-void apply_run_settings(const RunSettings& settings, Options& opt)
+/// The front ends' run controls (seed, threads, progress, stop) in a method's options.
+inline void apply_run_settings(const RunSettings& settings, RunControls& opt)
 {
-    opt.seed = settings.seed;
-    opt.nthreads = settings.nthreads;
-    opt.progress = settings.progress;
-    opt.stop = settings.stop;
+    opt = settings;
 }
 
 /// Throws std::runtime_error("stopped") if `stop` is set (stop.h): a method's check
