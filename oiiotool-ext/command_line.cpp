@@ -19,6 +19,7 @@
 
 #include "cli_error.h"
 #include "commands.h"
+#include "item_kinds.h"
 #include "output_format.h"
 
 namespace texsyn::cli {
@@ -97,12 +98,6 @@ struct PlannedItem {
     std::vector<std::string> maps; ///< a material set's maps, by name
 };
 
-// "--neighborhood, --choosy and --patch": the commands that synthesize material sets.
-std::string material_takers()
-{
-    return command_list([](const Method& m) { return synthesizes_materials(m); });
-}
-
 // The maps --material's options make: the albedo, then every map whose file is given (in
 // the option table's order, which is the material's).
 std::vector<std::string> material_maps(const MethodOptions& options)
@@ -112,71 +107,6 @@ std::vector<std::string> material_maps(const MethodOptions& options)
         if (f.type == OptionType::InputFile && !options.value(f.name).empty())
             maps.push_back(f.name);
     return maps;
-}
-
-// "out_{map}.exr" with `map` in place of {map}.
-std::string map_filename(const std::string& pattern, const std::string& map)
-{
-    std::string name = pattern;
-    for (size_t at = name.find("{map}"); at != std::string::npos; at = name.find("{map}", at))
-        name.replace(at, 5, map);
-    return name;
-}
-
-// "--pyramid, --mix and --transfer": the commands that take analyses.
-std::string analysis_takers()
-{
-    return command_list(
-        [](const Method& m) { return m.accepts_analysis(0) || m.accepts_analysis(1); });
-}
-
-// The items command `name` of row `m` pops must be of a kind it takes.
-void check_inputs(const std::string& name, const Method& m, const std::vector<PlannedItem>& popped)
-{
-    for (size_t i = 0; i < popped.size(); ++i) {
-        if (popped[i].kind == ItemKind::Material
-            && (!synthesizes_materials(m) || popped.size() != 1))
-            throw CliError(name + " : the current item is a material set (from --material); "
-                + material_takers() + " synthesize one");
-        if (popped[i].kind == ItemKind::Volume || popped[i].kind == ItemKind::Mesh)
-            throw CliError(name + " : the current image is " + item_kind_text(popped[i].kind)
-                + " (from " + (popped[i].kind == ItemKind::Volume ? "--solid" : "--choosy-surface")
-                + "); it needs a 2-D image");
-        if (popped[i].kind == ItemKind::Analysis && !m.accepts_analysis(int(i)))
-            throw CliError(name + " : needs an image, not an analysis ("
-                + (popped[i].made ? "the " : "") + popped[i].name + "; only " + analysis_takers()
-                + " take analyses)");
-    }
-}
-
-// -o writes what the top item is: a volume as .vdb or a slice .exr, an analysis as .tsa.
-void check_output_kind(const std::string& out, ItemKind kind)
-{
-    const bool vdb = OIIO::Strutil::iends_with(out, ".vdb");
-    if (kind == ItemKind::Volume && !vdb && !OIIO::Strutil::iends_with(out, ".exr"))
-        throw CliError("-o " + out
-            + " : a solid texture is written as .vdb (OpenVDB) or .exr (one part per z "
-              "slice), not '"
-            + std::filesystem::path(out).extension().string() + "'");
-    const bool ply = OIIO::Strutil::iends_with(out, ".ply");
-    if (kind != ItemKind::Mesh && ply)
-        throw CliError("-o " + out
-            + " : .ply holds textured meshes (from --choosy-surface); the current item is "
-            + item_kind_text(kind));
-    if (kind == ItemKind::Mesh && (vdb || is_analysis_filename(out)))
-        throw CliError("-o " + out
-            + " : the current item is a textured mesh; write it as .ply, or its UV bake as an "
-              "image (.exr, .png, .tif)");
-    if (kind != ItemKind::Volume && vdb)
-        throw CliError(
-            "-o " + out + " : .vdb holds solid textures (from --solid); the current image is 2-D");
-    if (kind == ItemKind::Analysis && !is_analysis_filename(out))
-        throw CliError("-o " + out
-            + " : the current item is an analysis; write it as *.tsa, or synthesize from it "
-              "first (--pyramid)");
-    if ((kind == ItemKind::Image || kind == ItemKind::Material) && is_analysis_filename(out))
-        throw CliError(
-            "-o " + out + " : analysis files are made by --analyze (the current item is an image)");
 }
 
 int64_t int_argument(const std::string& option, const std::string& value, int64_t lo, int64_t hi)
@@ -265,7 +195,8 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
     std::vector<std::string> inputs, outputs, recipes, colorspaces;
     std::vector<std::pair<std::string, std::string>> side_outputs;
     std::vector<PlannedItem> stack; // as the run will build it
-    bool volumes = false, report = false;
+    std::string volume_command;     // a command that makes a solid texture
+    bool report = false;
     // Pops the `n` items `command` takes (checked), returning them.
     auto pop = [&](const std::string& command, int n) {
         if (int(stack.size()) < n)
@@ -314,22 +245,13 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
                 state.data_format = data_format_argument(v);
             else if (a == "-o") {
                 const PlannedItem item = pop(a, 1)[0]; // -o writes the top item and leaves it
-                check_output_kind(v, item.kind);
-                if (item.kind == ItemKind::Material) { // one file per map
-                    if (v.find("{map}") == std::string::npos)
-                        throw CliError("-o " + v + " : the current item is a material set ("
-                            + OIIO::Strutil::join(item.maps, ", ")
-                            + "); put {map} in the name, e.g. out_{map}.exr");
-                    for (const std::string& map : item.maps)
-                        outputs.push_back(map_filename(v, map));
-                } else {
-                    outputs.push_back(v);
-                }
+                for (const std::string& file : output_files(v, item.kind, item.maps))
+                    outputs.push_back(file);
                 stack.push_back(item);
             } else if (a == "--recipe") {
                 recipes.push_back(v);
                 const PlannedItem item = pop(a, 1)[0];
-                if (item.kind == ItemKind::Analysis || item.kind == ItemKind::Material)
+                if (!kind_rules(item.kind).recipes)
                     throw CliError("--recipe " + v + " : the current item is "
                         + item_kind_text(item.kind) + "; recipes describe images");
                 stack.push_back(item);
@@ -388,9 +310,13 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
             MethodOptions options = command_options(name, *m, modifiers, inputs, side_outputs);
             const std::vector<PlannedItem> popped
                 = pop(name, m->input_count(options, int(stack.size())));
-            check_inputs(name, *m, popped);
+            for (size_t k = 0; k < popped.size(); ++k)
+                kind_rules(popped[k].kind)
+                    .check_input(
+                        name, *m, int(k), int(popped.size()), popped[k].name, popped[k].made);
             state.options[i] = std::move(options);
-            volumes = volumes || m->output == MethodOutput::Volume;
+            if (m->output == MethodOutput::Volume)
+                volume_command = name;
             report = report || m->output == MethodOutput::Report;
             if (m->output == MethodOutput::Report) {
                 stack.insert(stack.end(), popped.begin(), popped.end());
@@ -414,9 +340,9 @@ Early check_command_line(CliState& state, const std::vector<std::string>& args)
     }
     if (outputs.empty() && recipes.empty() && !report && !args.empty())
         throw CliError("nothing to do: no -o FILE (see texsyn --help)");
-    if (volumes && state.subbands)
-        throw CliError("--subbands : does not apply to --solid (solid textures have no "
-                       "inspection EXR)");
+    if (!volume_command.empty() && state.subbands)
+        throw CliError("--subbands : does not apply to " + volume_command
+            + " (solid textures have no inspection EXR)");
     for (const std::string& recipe : recipes) {
         check_output_path("--recipe", recipe, inputs);
         if (!OIIO::Strutil::iends_with(recipe, ".texsyn"))

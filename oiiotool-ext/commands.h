@@ -27,14 +27,24 @@ void reinterpret_input(CliState& state, const std::string& colorspace);
 void run_method_command(CliState& state, const Method& method, const MethodOptions& options,
     const std::string& modifiers);
 
-/// Writes the top item for `filename`: an image in the colour space and pixel type of the
-/// policy in docs/colour.md (with --subbands the multi-part inspection EXR), an analysis
-/// as *.tsa, a volume as OpenVDB or a slice EXR; with synth:* metadata; to a temporary
-/// file committed at the end of the run.
+/// Writes the top item for `filename` as its kind says (item_kinds.h), with synth:*
+/// metadata, to temporary files committed at the end of the run.
 void write_output(CliState& state, const std::string& filename);
 
-/// Writes the volume on top of the stack (write_output's volume case).
-void write_volume_output(CliState& state, const std::string& filename);
+/// The writers of the kinds of item (item_kinds.h), each of `item` for -o `filename`: an
+/// image in the colour space and pixel type of the policy in docs/colour.md (with
+/// --subbands the multi-part inspection EXR); an analysis as *.tsa; a volume as OpenVDB or
+/// a slice EXR; a textured mesh as .ply or its UV bake (one image per UDIM tile); a
+/// material set as one file per map (material_map_filename), the albedo like an image and
+/// the other maps as their numbers.
+void write_image_output(CliState& state, StackItem& item, const std::string& filename);
+void write_analysis_output(CliState& state, StackItem& item, const std::string& filename);
+void write_volume_output(CliState& state, StackItem& item, const std::string& filename);
+void write_mesh_output(CliState& state, StackItem& item, const std::string& filename);
+void write_material_output(CliState& state, StackItem& item, const std::string& filename);
+
+/// "out_{map}.exr" with `map` in place of every {map}.
+std::string material_map_filename(const std::string& pattern, const std::string& map);
 
 /// --recipe FILE: writes the recipe of the top item (a command's result from files), with
 /// paths relative to FILE's folder.

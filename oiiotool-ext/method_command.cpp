@@ -2,6 +2,7 @@
 // Every registry command the same way: pop its inputs, run it, push its result.
 #include "cli_error.h"
 #include "commands.h"
+#include "item_kinds.h"
 #include "quiet_stderr.h"
 
 #include <algorithm>
@@ -46,7 +47,7 @@ std::shared_ptr<const Recipe> recipe_of(CliState& state, const Method& m,
     const MethodOptions& options, const std::vector<StackItem>& inputs, std::string& why)
 {
     if (!m.makes_recipes()) {
-        why = "--" + m.name + " makes " + item_kind_text(ItemKind::Analysis)
+        why = "--" + m.name + " makes " + item_kind_text(item_kind(m.output))
             + ", and recipes describe images";
         return nullptr;
     }
@@ -131,16 +132,12 @@ void run_method_command(
     std::vector<MethodInput> in;
     for (const StackItem& item : inputs)
         in.push_back({ item.kind == ItemKind::Image ? &item.buf : nullptr, item.analysis.get(),
-            item.file.empty() ? item.name : item.file });
+            item.file.empty() ? item.name : item.file,
+            item.kind == ItemKind::Material ? item.material.get() : nullptr });
     RunSettings settings;
     settings.seed = state.seed;
     settings.nthreads = state.threads;
     settings.subbands = state.subbands && m.subbands;
-    // A material set: the method synthesizes the maps its search weighs, and its source map
-    // then moves every map.
-    const Material* material = inputs.size() == 1 && inputs[0].kind == ItemKind::Material
-        ? inputs[0].material.get()
-        : nullptr;
     const auto start = std::chrono::steady_clock::now();
     std::shared_ptr<ProgressMeter> meter;
     if (state.progress != ProgressMode::Off && m.output != MethodOutput::Report) {
@@ -151,9 +148,7 @@ void run_method_command(
     }
 
     MethodResult result;
-    ok = material
-        ? run_material_method(m, options, *material, in[0].name, files, settings, result, error)
-        : run_method(m, options, in, files, settings, result, error);
+    ok = run_method(m, options, in, files, settings, result, error);
     if (meter)
         print_progress(meter->finish(ok, seconds_since(start)));
     if (!ok) {
@@ -175,9 +170,8 @@ void run_method_command(
     }
 
     StackItem item;
-    item.kind = item_kind(m.output);
-    if (material)
-        item.kind = ItemKind::Material;
+    // A material set in gives a material set out (its maps moved together).
+    item.kind = result.material ? ItemKind::Material : item_kind(m.output);
     std::vector<std::string> names;
     for (const StackItem& input : inputs)
         names.push_back(short_name(input));

@@ -3,6 +3,7 @@
 // (docs/colour.md) to temporary files committed only when the whole run succeeds.
 #include "cli_error.h"
 #include "commands.h"
+#include "item_kinds.h"
 #include "output_format.h"
 #include "quiet_stderr.h"
 
@@ -29,16 +30,8 @@ std::string without_file(const std::string& error)
     return colon == std::string::npos ? error : error.substr(colon + 2);
 }
 
-void write_analysis(CliState& state, StackItem& item, const std::string& filename)
-{
-    std::string error;
-    if (!write_statistics(state.outputs.add(filename), *item.analysis, error))
-        throw CliError("-o " + filename + " : " + state.outputs.final_names(without_file(error)));
-    item.file = filename; // once committed, the analysis is that file (for --recipe)
-}
-
-// Writes `image`, the pixels of `item` (its own, or one UDIM tile of its bake).
-void write_image(CliState& state, const StackItem& item, const OIIO::ImageBuf& image,
+// Writes `image`, the pixels of `item` (its own, or one UDIM tile of its bake, or a map).
+void write_pixels(CliState& state, const StackItem& item, const OIIO::ImageBuf& image,
     const std::string& filename)
 {
     const ColorConfig& cc = state.colors();
@@ -94,8 +87,22 @@ std::string udim_filename(const std::string& filename, int udim)
         : filename.substr(0, at) + std::to_string(udim) + filename.substr(at + 6);
 }
 
-// A textured mesh: the mesh as .ply, or its UV bake as images (one per UDIM tile).
-void write_mesh_output(CliState& state, const StackItem& item, const std::string& filename)
+} // namespace
+
+void write_analysis_output(CliState& state, StackItem& item, const std::string& filename)
+{
+    std::string error;
+    if (!write_statistics(state.outputs.add(filename), *item.analysis, error))
+        throw CliError("-o " + filename + " : " + state.outputs.final_names(without_file(error)));
+    item.file = filename; // once committed, the analysis is that file (for --recipe)
+}
+
+void write_image_output(CliState& state, StackItem& item, const std::string& filename)
+{
+    write_pixels(state, item, item.buf, filename);
+}
+
+void write_mesh_output(CliState& state, StackItem& item, const std::string& filename)
 {
     const SurfaceTexture& texture = *item.surface;
     std::string error;
@@ -119,19 +126,23 @@ void write_mesh_output(CliState& state, const StackItem& item, const std::string
             + "; put <UDIM> in the name (e.g. texture_<UDIM>.exr) for one file per tile");
     }
     for (const auto& [udim, image] : texture.bake)
-        write_image(state, item, image, udim_filename(filename, udim));
+        write_pixels(state, item, image, udim_filename(filename, udim));
 }
 
-// A material set: one file per map, {map} in the name replaced by the map's name; the
-// albedo written like an image, the other maps as their numbers (Raw).
-void write_material_output(CliState& state, const StackItem& item, const std::string& pattern)
+std::string material_map_filename(const std::string& pattern, const std::string& map)
+{
+    std::string name = pattern;
+    for (size_t at = name.find("{map}"); at != std::string::npos; at = name.find("{map}", at))
+        name.replace(at, 5, map);
+    return name;
+}
+
+void write_material_output(CliState& state, StackItem& item, const std::string& pattern)
 {
     for (const MaterialMap& map : item.material->maps) {
-        std::string name = pattern;
-        for (size_t at = name.find("{map}"); at != std::string::npos; at = name.find("{map}", at))
-            name.replace(at, 5, map.name);
+        const std::string name = material_map_filename(pattern, map.name);
         if (map.kind == MapKind::Colour) {
-            write_image(state, item, map.image, name);
+            write_pixels(state, item, map.image, name);
             continue;
         }
         // A data map's numbers are what it means: an integer file, which holds 0..1, must
@@ -148,24 +159,14 @@ void write_material_output(CliState& state, const StackItem& item, const std::st
         StackItem data;
         data.input_format = item.input_format;
         data.input_colorspace = data.output_colorspace = "Raw";
-        write_image(state, data, map.image, name);
+        write_pixels(state, data, map.image, name);
     }
 }
-
-} // namespace
 
 void write_output(CliState& state, const std::string& filename)
 {
     StackItem& item = state.stack.top("-o");
-    if (item.kind == ItemKind::Material)
-        return write_material_output(state, item, filename);
-    if (item.kind == ItemKind::Volume)
-        return write_volume_output(state, filename);
-    if (item.kind == ItemKind::Analysis)
-        return write_analysis(state, item, filename);
-    if (item.kind == ItemKind::Mesh)
-        return write_mesh_output(state, item, filename);
-    write_image(state, item, item.buf, filename);
+    kind_rules(item.kind).write(state, item, filename);
 }
 
 void write_recipe(CliState& state, const std::string& filename)

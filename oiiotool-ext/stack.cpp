@@ -5,35 +5,6 @@
 
 namespace texsyn::cli {
 
-const char* item_kind_text(ItemKind kind)
-{
-    return kind == ItemKind::Analysis ? "an analysis"
-        : kind == ItemKind::Volume    ? "a solid texture"
-        : kind == ItemKind::Mesh      ? "a textured mesh"
-        : kind == ItemKind::Material  ? "a material set"
-                                      : "an image";
-}
-
-std::string result_name(const Method& m, const std::vector<std::string>& inputs)
-{
-    std::string names;
-    for (const std::string& input : inputs)
-        names += (names.empty() ? "" : ", ") + input;
-    const std::string what = m.output == MethodOutput::Analysis ? "analysis"
-        : m.output == MethodOutput::Material                    ? "material set"
-                                                                : m.name + " synthesis";
-    return names.empty() ? what : what + " of " + names;
-}
-
-ItemKind item_kind(MethodOutput output)
-{
-    return output == MethodOutput::Volume  ? ItemKind::Volume
-        : output == MethodOutput::Analysis ? ItemKind::Analysis
-        : output == MethodOutput::Mesh     ? ItemKind::Mesh
-        : output == MethodOutput::Material ? ItemKind::Material
-                                           : ItemKind::Image;
-}
-
 std::string too_few_items(const std::string& command, int needed, int have)
 {
     if (have == 0 && needed == 1)

@@ -16,7 +16,7 @@
 
 namespace texsyn::cli {
 
-/// What a stack item holds.
+/// What a stack item holds (item_kinds.h: what the tool does with each).
 enum class ItemKind {
     Image,    ///< a 2-D image, scene-linear float
     Analysis, ///< a sample's statistics (an analysis file, or made by --analyze)
@@ -51,17 +51,6 @@ struct StackItem {
     std::shared_ptr<const Recipe> recipe;
     std::string no_recipe;
 };
-
-/// "an image", "an analysis", "a solid texture", "a textured mesh" or "a material set".
-const char* item_kind_text(ItemKind kind);
-
-/// What the result of `method` on inputs called `inputs` (file names without folders, or
-/// results' names) is called: "pyramid synthesis of rust.png", "analysis of rust.png",
-/// "material set of bricks.png", "cascade synthesis".
-std::string result_name(const Method& method, const std::vector<std::string>& inputs);
-
-/// The kind of item a method's result is (a report leaves its input: Image).
-ItemKind item_kind(MethodOutput output);
 
 /// "CMD : no current image (…)" or "CMD : needs N images on the stack, there are H":
 /// the message for a command that finds too few items.

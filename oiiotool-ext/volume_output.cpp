@@ -13,9 +13,8 @@
 
 namespace texsyn::cli {
 
-void write_volume_output(CliState& state, const std::string& filename)
+void write_volume_output(CliState& state, StackItem& img, const std::string& filename)
 {
-    const StackItem& img = state.stack.top("-o");
     const ColorConfig& cc = state.colors();
     const std::string space
         = cc.resolve(img.output_colorspace.empty() ? cc.scene_linear() : img.output_colorspace);

@@ -108,10 +108,10 @@ void read_inputs(Call& call, py::tuple args)
             in.analysis = g.cast<const PyAnalysis&>().stats;
             in.name = in.analysis->source.empty() ? roles[i] : in.analysis->source;
         } else if (py::isinstance<PyMaterial>(g) || py::isinstance<py::dict>(g)) {
-            if (!synthesizes_materials(m) || given.size() != 1)
+            if (!m.copies_pixels || given.size() != 1)
                 raise_error(ErrorKind::Value,
                     call.function + ": a material set is synthesized by the copying methods ("
-                        + command_list(synthesizes_materials, "", "") + "), one set at a time");
+                        + command_list(&Method::copies_pixels, "", "") + "), one set at a time");
             in.material = py::isinstance<PyMaterial>(g)
                 ? std::make_shared<PyMaterial>(g.cast<PyMaterial>())
                 : nullptr; // a dict: made once the keywords are read

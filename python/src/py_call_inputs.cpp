@@ -46,6 +46,11 @@ bool read_call_inputs(Call& call, const MethodOptions& file_options, ReadInputs&
                     in.image->pixels, in.name, *call.colors, in.colorspace, s, error, call.threads))
                 return false;
         }
+        if (in.material) {
+            r.inputs.push_back(
+                { nullptr, nullptr, in.material->name, in.material->material.get() });
+            continue;
+        }
         const TextureStatistics* analysis = in.analysis ? in.analysis.get() : s.analysis.get();
         r.inputs.push_back({ analysis ? nullptr : &s.pixels, analysis, in.name });
     }

@@ -155,7 +155,7 @@ py::list method_table()
         row["help"] = m->help;
         row["example"] = m->example;
         row["doc"] = m->doc;
-        row["materials"] = synthesizes_materials(*m);
+        row["materials"] = m->copies_pixels;
         row["subbands"] = m->subbands;
         py::list options;
         for (const OptionField& f : defaults.table().fields())

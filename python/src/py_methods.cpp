@@ -43,7 +43,9 @@ py::array_t<float> planar_array(const PlanarImage& image)
 // A dict of maps ({"albedo": ..., "normal": ...}) as the Material texsyn.material() makes.
 std::shared_ptr<const PyMaterial> material_of_dict(const Call& call, py::dict maps)
 {
-    const Method* row = find_method("material");
+    // The row that makes material sets from their maps.
+    const Method* row = *std::find_if(methods().begin(), methods().end(),
+        [](const Method* r) { return r->output == MethodOutput::Material; });
     Call m;
     m.method = row;
     m.function = call.function;
@@ -126,7 +128,7 @@ py::object run_call(Call& call)
     settings.max_memory = call.max_memory;
     settings.progress = control.progress();
     settings.stop = control.stop();
-    settings.source_map = synthesizes_materials(m);
+    settings.source_map = m.copies_pixels;
     settings.subbands = call.subbands;
     ReadInputs r;
     MethodResult result;
@@ -144,9 +146,7 @@ py::object run_call(Call& call)
             ok = result_layout(m, call.options, layouts, layout, error);
         }
         if (ok) {
-            ok = material ? run_material_method(m, call.options, *material->material,
-                     material->name, r.files, settings, result, error)
-                          : run_method(m, call.options, r.inputs, r.files, settings, result, error);
+            ok = run_method(m, call.options, r.inputs, r.files, settings, result, error);
             kind = control.failure_kind();
         }
         return ok;

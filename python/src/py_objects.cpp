@@ -104,7 +104,7 @@ void register_objects(py::module_& m)
           "texsyn.material() makes it. A method that copies pixels, given a Material,\n"
           "synthesizes every map together and returns a dict of maps with its source map.\n"
           "The methods that take one: "
-        + command_list(synthesizes_materials, "", "") + ".";
+        + command_list(&Method::copies_pixels, "", "") + ".";
     py::class_<PyMaterial>(m, "Material", material_doc.c_str())
         .def_property_readonly("maps", &PyMaterial::maps,
             "The maps by name, the albedo first, each given back as it was given.")

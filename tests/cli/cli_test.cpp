@@ -576,10 +576,10 @@ TEST_F(Cli, BadAnalysisCommandsAndFilesAreRefused)
         "orientations, fft, flatten)");
     expect_failure("stucco.png --analyze -o a.exr",
         "texsyn ERROR: -o a.exr : the current item is an analysis; write it as *.tsa, or "
-        "synthesize from it first (--pyramid)");
+        "synthesize from it first (--pyramid, --mix and --transfer take analyses)");
     expect_failure("stucco.png --pyramid:size=32x32 -o a.tsa",
-        "texsyn ERROR: -o a.tsa : analysis files are made by --analyze (the current item is an "
-        "image)");
+        "texsyn ERROR: -o a.tsa : .tsa holds analyses (from --analyze); the current item is an "
+        "image");
     expect_failure("--subbands stucco.png --analyze -o a.tsa",
         "texsyn ERROR: -o a.tsa : --subbands writes images, not analysis files");
     expect_failure("stucco.png --analyze:scales=9 -o a.tsa",
@@ -752,7 +752,7 @@ TEST_F(Cli, BadSolidRequestsAreRefused)
         "part per z slice), not '.png'");
     expect_failure("stucco.png --pyramid:size=32x32 -o out.vdb",
         "texsyn ERROR: -o out.vdb : .vdb holds solid textures (from --solid); the current "
-        "image is 2-D");
+        "item is an image");
     expect_failure("stucco.png --solid:size=16x16x16 --pyramid -o out.exr",
         "texsyn ERROR: --pyramid : the current image is a solid texture (from --solid); it "
         "needs a 2-D image");

@@ -196,8 +196,8 @@ TEST_F(SurfaceCli, BadSettingsAreRefusedBeforeTheWork)
         "current item is an image",
         in);
     expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:levels=2 -o out.tsa",
-        "texsyn ERROR: -o out.tsa : the current item is a textured mesh; write it as .ply, or "
-        "its UV bake as an image (.exr, .png, .tif)",
+        "texsyn ERROR: -o out.tsa : .tsa holds analyses (from --analyze); the current item is "
+        "a textured mesh",
         in);
     expect_failure("flowers.png --choosy-surface:mesh=sphere.obj:levels=2 --choosy -o out.png",
         "texsyn ERROR: --choosy : the current image is a textured mesh (from --choosy-surface); "

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "test_metrics.h"
+#include "test_samples.h"
 
 using namespace texsyn;
 
@@ -242,14 +243,89 @@ TEST(Methods, RunMethodChecksWhatItIsGiven)
     EXPECT_EQ(error, "dilation=ctrl.exr : the control image has 3 channels; expected 1");
 }
 
+// A material set goes through run_method like any input: every row that copies pixels moves
+// each map of the set by the one source map of its run, so a map made from the albedo's
+// red channel is still exactly that channel of the synthesized albedo. (Rows that keep
+// their image's size and need an option file, fill with its mask=, are run by their own
+// tests.)
+TEST(Methods, EveryCopyingRowMovesEveryMapOfAMaterialSetTogether)
+{
+    Material set;
+    set.maps.push_back(
+        { "albedo", MapKind::Colour, 1.0f, test::linear_crop("bricks.png", 128, 128) });
+    set.maps.push_back({ "height", MapKind::Data, 0.0f,
+        OIIO::ImageBufAlgo::channels(set.maps[0].image, 1, { 0 }) });
+    int ran = 0;
+    for (const Method* m : methods()) {
+        if (!m->copies_pixels)
+            continue;
+        MethodOptions options = m->defaults();
+        std::string error;
+        if (!options.set("size", "144x128", error) || !options.validate(error))
+            continue;
+        RunSettings settings;
+        settings.seed = 3;
+        MethodResult result;
+        ASSERT_TRUE(run_method(
+            *m, options, { { nullptr, nullptr, "bricks.png", &set } }, {}, settings, result, error))
+            << m->name << ": " << error;
+        ASSERT_TRUE(result.material) << m->name;
+        ASSERT_EQ(result.material->maps.size(), 2u) << m->name;
+        const OIIO::ImageBuf& albedo = result.material->maps[0].image;
+        const OIIO::ImageBuf& height = result.material->maps[1].image;
+        EXPECT_EQ(result.material->maps[1].name, "height");
+        ASSERT_EQ(albedo.spec().width, 144) << m->name;
+        ASSERT_EQ(height.spec().height, 128) << m->name;
+        EXPECT_EQ(result.image.spec().width, 144) << m->name << ": the image is the albedo";
+        int differ = 0;
+        for (OIIO::ImageBuf::ConstIterator<float> a(albedo), h(height); !a.done(); ++a, ++h)
+            differ += a[0] != h[0];
+        EXPECT_EQ(differ, 0) << m->name << ": the height moved apart from the albedo";
+        ++ran;
+    }
+    EXPECT_GE(ran, 3);
+}
+
+// Only a row that copies pixels takes a material set, and then as its only input; an input
+// is exactly one thing.
+TEST(Methods, AMaterialSetGoesOnlyToACopyingRowAndAlone)
+{
+    Material set;
+    set.maps.push_back({ "albedo", MapKind::Colour, 1.0f, grey_image(32, 32) });
+    const OIIO::ImageBuf image = grey_image(32, 32);
+    const Method& pyramid = *find_method("pyramid");
+    MethodOptions options = pyramid.defaults();
+    std::string error;
+    ASSERT_TRUE(options.set("size", "32x32", error)) << error;
+    MethodResult result;
+    EXPECT_FALSE(
+        run_method(pyramid, options, { { nullptr, nullptr, "set", &set } }, {}, {}, result, error));
+    EXPECT_EQ(error,
+        "set is a material set; neighborhood, choosy, patch and fill synthesize one, one set at "
+        "a time");
+    const Method& patch = *find_method("patch");
+    EXPECT_FALSE(run_method(
+        patch, patch.defaults(), { { &image, nullptr, "both", &set } }, {}, {}, result, error));
+    EXPECT_EQ(error, "input 0 (both) must be one of an image, an analysis or a material set");
+}
+
+// A row copies pixels exactly when it writes their source map (an output-file option map=):
+// the flag is what the front ends ask, the option what users give.
+TEST(Methods, ARowCopiesPixelsExactlyWhenItWritesASourceMap)
+{
+    for (const Method* m : methods()) {
+        const OptionField* map = m->defaults().table().find("map");
+        EXPECT_EQ(m->copies_pixels, map && map->file == FileUse::Write) << m->name;
+    }
+}
+
 // Messages list commands from the rows: those that copy pixels write source maps (cascade's
 // map= is a parameter, not a file it writes), and the list reads as a sentence.
 TEST(Methods, CommandListsComeFromTheRows)
 {
-    EXPECT_EQ(command_list(writes_source_map, ":map="),
+    EXPECT_EQ(command_list(&Method::copies_pixels, ":map="),
         "--neighborhood:map=, --choosy:map=, --patch:map= and --fill:map=");
-    EXPECT_EQ(command_list(synthesizes_materials, "", ""), "neighborhood, choosy, patch and fill");
-    EXPECT_FALSE(writes_source_map(*find_method("cascade")));
+    EXPECT_FALSE(find_method("cascade")->copies_pixels);
     EXPECT_EQ(command_list([](const Method& m) { return m.name == "check"; }), "--check");
     EXPECT_EQ(command_list([](const Method&) { return false; }), "");
 }

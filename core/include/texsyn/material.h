@@ -55,18 +55,5 @@ bool material_search_image(const Material& material, OIIO::ImageBuf& dst, std::s
 bool apply_material(
     const OIIO::ImageBuf& source_map, const Material& material, Material& out, std::string& error);
 
-/// Whether `method` synthesizes material sets: it copies sample pixels and can give their
-/// source map (an output-file option "map").
-bool synthesizes_materials(const Method& method);
-
-/// Synthesizes `material` with `method` (synthesizes_materials()): the method runs on
-/// material_search_image() with settings.source_map set, named `name` in messages, then
-/// apply_material() moves every map by the run's source map. `result` is the run's
-/// (its files hold the source map "map"), with result.material the synthesized set and
-/// result.image its albedo. False with a message as run_method() or apply_material() give.
-bool run_material_method(const Method& method, const MethodOptions& options,
-    const Material& material, const std::string& name, const OptionImages& files,
-    RunSettings settings, MethodResult& result, std::string& error);
-
 } // namespace texsyn
 #pragma GCC visibility pop

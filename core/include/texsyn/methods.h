@@ -161,11 +161,13 @@ enum class MethodOutput {
     Material,
 };
 
-/// One input of a run: an image (scene-linear float) or an analysis.
+/// One input of a run: an image (scene-linear float), an analysis, or a material set (the
+/// only input of a row that copies_pixels).
 struct MethodInput {
     const OIIO::ImageBuf* image = nullptr;
     const TextureStatistics* analysis = nullptr;
     std::string name; ///< what to call it in messages and reports, e.g. its file name
+    const Material* material = nullptr;
 };
 
 /// The largest seed every front end takes (--seed, a recipe's "seed", Python's seed=): the
@@ -289,6 +291,10 @@ struct Method {
     /// size= if given, else the size of the input the colours come from (colours_from),
     /// with that input's channels, and tiling.
     MethodLayout layout = {};
+    /// Every output pixel is a sample pixel: it gives their source map (the output-file
+    /// option map=, or RunSettings::source_map) and so synthesizes material sets (a
+    /// MethodInput::material moves every map of the set by that source map).
+    bool copies_pixels = false;
 
     /// How many items it takes when `available` are on the stack.
     int input_count(const MethodOptions& options, int available) const;
@@ -317,10 +323,6 @@ std::string method_names(bool all = false);
 std::string command_list(const std::function<bool(const Method&)>& which,
     const std::string& suffix = "", const std::string& prefix = "--");
 
-/// Whether `method` writes a source map (an output-file option `map` of kind Write): the
-/// rows that copy sample pixels.
-bool writes_source_map(const Method& method);
-
 /// The layout of `method`'s result (a row that makes images or volumes) for `options` and
 /// inputs with these layouts: the row's rule, or the usual one. Fails (false, `error`) if
 /// the options do not validate, the input count is wrong, or the rule refuses.
@@ -333,10 +335,13 @@ InputLayout input_layout(const MethodInput& input);
 /// Runs `method` with `options` on `inputs`: checks the options (validate()), the inputs'
 /// count and kinds (naming each by MethodInput::name), that every input-file option that
 /// names a file has its image in `files`, then calls the row's run function with any
-/// exception turned into a message. The result names its inputs (their file names without
-/// folders): synth:sample (a transfer's image: synth:image), or an analysis's `source`; an
-/// image or volume is checked against result_layout() (a mismatch is an internal error)
-/// and carries wrapmodes "periodic,periodic" if it tiles. False with a message otherwise.
+/// exception turned into a message. A material set (the one input of a row that
+/// copies_pixels) is synthesized as material.h says: `result` then holds the set
+/// (result.material), its albedo as the image, and the run's source map in its files. The result
+/// names its inputs (their file names without folders): synth:sample (a transfer's image:
+/// synth:image), or an analysis's `source`; an image or volume is checked against result_layout()
+/// (a mismatch is an internal error) and carries wrapmodes "periodic,periodic" if it tiles. False
+/// with a message otherwise.
 bool run_method(const Method& method, const MethodOptions& options,
     const std::vector<MethodInput>& inputs, const OptionImages& files, const RunSettings& settings,
     MethodResult& result, std::string& error);

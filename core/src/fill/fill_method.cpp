@@ -121,7 +121,7 @@ const Method& fill_method()
         "the mask stay bit-identical. The cost follows the holes, not the image.",
         "texsyn data/samples/bricks.png --fill:mask=data/masks/bricks_hole.png -o "
         "bricks_filled.png",
-        "", false, {}, {}, {}, fill_layout };
+        "", false, {}, {}, {}, fill_layout, true };
     return m;
 }
 

@@ -14,6 +14,7 @@
 #include <texsyn/stats.h>
 
 #include "image/memory_pvt.h"
+#include "material/material_run_pvt.h"
 #include "result_layout_pvt.h"
 
 namespace texsyn {
@@ -125,12 +126,6 @@ std::string command_list(const std::function<bool(const Method&)>& which, const 
     return list;
 }
 
-bool writes_source_map(const Method& method)
-{
-    const OptionField* map = method.defaults().table().find("map");
-    return map && map->file == FileUse::Write;
-}
-
 std::string method_names(bool all)
 {
     std::string names;
@@ -201,9 +196,14 @@ bool run_method(const Method& method, const MethodOptions& options,
     }
     for (int i = 0; i < n; ++i) {
         const MethodInput& in = inputs[size_t(i)];
-        if (!in.image == !in.analysis) {
+        if (in.material && (!method.copies_pixels || n != 1)) {
+            error = in.name + " is a material set; " + command_list(&Method::copies_pixels, "", "")
+                + " synthesize one, one set at a time";
+            return false;
+        }
+        if (int(!in.image) + int(!in.analysis) + int(!in.material) != 2) {
             error = "input " + std::to_string(i) + " (" + in.name
-                + ") is missing (give an image or an analysis)";
+                + ") must be one of an image, an analysis or a material set";
             return false;
         }
         if (in.analysis && !method.accepts_analysis(i)) {
@@ -220,6 +220,9 @@ bool run_method(const Method& method, const MethodOptions& options,
         }
     try {
         const detail::RunMemoryBudget budget(settings.max_memory);
+        if (n == 1 && inputs[0].material)
+            return detail::run_on_material(
+                method, options, inputs[0], files, settings, result, error);
         if (!method.run(options, inputs, files, settings, result, error))
             return false;
         warn_of_uneven_lighting(options, inputs, result);

@@ -112,7 +112,7 @@ bool apply(OIIO::ImageBuf& dst, const OIIO::ImageBuf& map, const OIIO::ImageBuf&
                 : ms.nchannels == 3 ? "the channels " + std::string(ms.channel_name(0)) + ", "
                     + std::string(ms.channel_name(1)) + ", " + std::string(ms.channel_name(2))
                                     : detail::count_text(ms.nchannels, "channel"),
-            command_list(writes_source_map, ":map="));
+            command_list(&Method::copies_pixels, ":map="));
         return false;
     }
     // A map of a scale= synthesis: an image of the sample's own size is resampled as the

@@ -90,6 +90,7 @@ Method copying_method(const char* name, const char* doc, const char* summary, co
                 options, inputs, settings, result, error, synthesize);
         },
         doc, summary, help, example, suits };
+    m.copies_pixels = true;
     m.layout = [layout](const MethodOptions& options, const std::vector<InputLayout>& inputs,
                    ResultLayout& result, std::string& error) {
         return layout(

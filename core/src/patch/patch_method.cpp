@@ -99,7 +99,7 @@ const Method& patch_method()
         "matched, repetition penalised; keeps bricks, tiles, weave and wood grain whole. Every "
         "output pixel is a sample pixel (map= writes where from).",
         "texsyn data/samples/bricks.png --patch:size=512x512 -o bricks_big.exr",
-        "structured: bricks, tiles, weave, wood grain", false, {}, {}, {}, patch_layout };
+        "structured: bricks, tiles, weave, wood grain", false, {}, {}, {}, patch_layout, true };
     return m;
 }
 
