@@ -327,7 +327,7 @@ TEST_F(Cli, EveryCommandReportsARangeErrorTheSameWay)
                 && (field.type == texsyn::OptionType::Integer
                     || field.type == texsyn::OptionType::Real))
                 f = &field;
-        if (!f) // --check takes no options, --material files, names and lists
+        if (!f) // e.g. --check takes no options, --material files, names and lists
             continue;
         const bool two = m->inputs == texsyn::MethodInputs::ImageAndSample
             || m->inputs == texsyn::MethodInputs::Samples;
@@ -347,7 +347,9 @@ TEST_F(Cli, EveryCommandReportsARangeErrorTheSameWay)
                 + number(f->lo) + ".." + number(f->hi));
         ++commands;
     }
-    EXPECT_EQ(commands, int(texsyn::methods().size()) - 2);
+    // Every row with a number option: all but --check and --material when this was written
+    // (a new row without one is left out, not miscounted).
+    EXPECT_GE(commands, 12);
 }
 
 TEST_F(Cli, ImpossibleSizesAreRefusedBeforeAllocating)

@@ -301,8 +301,8 @@ TEST(Methods, AMaterialSetGoesOnlyToACopyingRowAndAlone)
     EXPECT_FALSE(
         run_method(pyramid, options, { { nullptr, nullptr, "set", &set } }, {}, {}, result, error));
     EXPECT_EQ(error,
-        "set is a material set; neighborhood, choosy, patch and fill synthesize one, one set at "
-        "a time");
+        "set is a material set; " + command_list(&Method::copies_pixels, "", "")
+            + " synthesize one, one set at a time");
     const Method& patch = *find_method("patch");
     EXPECT_FALSE(run_method(
         patch, patch.defaults(), { { &image, nullptr, "both", &set } }, {}, {}, result, error));
