@@ -3,7 +3,8 @@
 // synthesized together. One copying synthesis (neighborhood, choosy, patch) runs on the
 // maps the search weighs and gives one source map; every map of the material is that
 // source map applied to it (source_map.h), so the maps stay aligned pixel for pixel and a
-// normal map turns with the copy.
+// normal map turns with the copy. run_method (methods.h) does this for a set given as its
+// input (MethodInput::material) to any row that copies_pixels.
 #pragma once
 
 #include <string>

@@ -94,14 +94,41 @@ size_t packed_file_bytes(const OIIO::ImageBuf& image, OIIO::TypeDesc format)
     return size_t(file.image_bytes());
 }
 
-// Whether `bytes`, an image file named like `path`, opens as an image of `spec`'s size and
-// channels (its header only: the pixels were encoded from memory by the same library).
-bool header_reads_back(
-    const std::string& path, std::vector<unsigned char>& bytes, const OIIO::ImageSpec& spec)
+} // namespace
+
+bool encode_in_memory(const OIIO::ImageBuf& image, const std::string& path, OIIO::TypeDesc format,
+    std::vector<unsigned char>& bytes, std::string& reason)
 {
+    const size_t raw = packed_file_bytes(image, format);
+    std::string refusal;
+    if (raw == 0 || raw > max_encoded_in_memory || !check_memory(raw, "the encoded image", refusal))
+        return false;
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out || !out->supports("ioproxy")) {
+        (void)OIIO::geterror();
+        return false;
+    }
+    out.reset();
+    bytes.clear();
+    bytes.reserve(raw + (size_t(1) << 16)); // what most files need: no regrowth
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    OIIO::ImageBuf view(image.spec(), const_cast<void*>(image.localpixels()));
+    view.set_write_ioproxy(&memory);
+    if (!view.write(path, format)) {
+        reason = one_line(view.geterror());
+        return false;
+    }
+    // A memory writer can fail silently where a file writer does not (OIIO 2.4's TIFF writer
+    // leaves out its directory when the file has an Exif block): the bytes must at least
+    // open as an image of the right size and channels.
     OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
     auto in = OIIO::ImageInput::create(path, false, nullptr, &reader);
+    // create() uses the proxy only to choose the reader: open() reads the file named `path`
+    // unless the proxy is set on the reader itself.
+    if (in)
+        in->set_ioproxy(&reader);
     OIIO::ImageSpec got;
+    const OIIO::ImageSpec& spec = image.spec();
     const bool ok = in && in->open(path, got) && got.width == spec.width
         && got.height == spec.height && got.nchannels == spec.nchannels;
     if (in && !ok)
@@ -110,34 +137,14 @@ bool header_reads_back(
     return ok;
 }
 
-} // namespace
-
 bool write_image_checked(const OIIO::ImageBuf& image, const std::string& path,
     OIIO::TypeDesc format, std::string& reason)
 {
-    const size_t raw = packed_file_bytes(image, format);
-    std::string refusal;
-    if (raw > 0 && raw <= max_encoded_in_memory
-        && check_memory(raw, "the encoded image", refusal)) {
-        auto out = OIIO::ImageOutput::create(path);
-        if (out && out->supports("ioproxy")) {
-            out.reset();
-            std::vector<unsigned char> bytes;
-            bytes.reserve(raw + (size_t(1) << 16)); // what most files need: no regrowth
-            OIIO::Filesystem::IOVecOutput memory(bytes);
-            OIIO::ImageBuf view(image.spec(), const_cast<void*>(image.localpixels()));
-            view.set_write_ioproxy(&memory);
-            if (!view.write(path, format)) {
-                reason = one_line(view.geterror());
-                return false;
-            }
-            // A memory writer can fail silently where a file writer does not (OIIO 2.4's
-            // TIFF writer leaves out its directory when the file has an Exif block): such
-            // bytes are not used, and the file is written and read back instead.
-            if (header_reads_back(path, bytes, image.spec()))
-                return write_file(path, bytes.data(), bytes.size(), reason);
-        }
-    }
+    std::vector<unsigned char> bytes;
+    if (encode_in_memory(image, path, format, bytes, reason))
+        return write_file(path, bytes.data(), bytes.size(), reason);
+    if (!reason.empty()) // the encoder refused the image
+        return false;
     if (!image.write(path, format)) {
         reason = one_line(image.geterror());
         return false;
