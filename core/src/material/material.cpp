@@ -4,9 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
-#include <texsyn/homogeneity.h>
 #include <texsyn/image.h>
 
 namespace texsyn {
