@@ -454,6 +454,13 @@ TEST(PatchSynthesize, ASampleAtTheLeastLevelsTriesOneMoreAndKeepsTheOneThatDoesN
         }
         const int kept = report.levels - 3, other = 1 - kept;
         EXPECT_EQ(pixel_hash(chosen), hash[kept]);
+        // The deeper schedule is tried first; where it repeats itself, the shallower one is
+        // kept without a trial of its own, and -v names the repetition that decided it.
+        if (repetition[1] > std::max(0.1, feature / 512.0))
+            EXPECT_NE(report.schedule.find("3 levels kept over 4, which repeats itself on a "
+                                           "512x512 trial (repetition"),
+                std::string::npos)
+                << report.schedule;
         if (std::max(repetition[0], repetition[1]) > 0.1) {
             repetition_decided = true;
             EXPECT_LT(repetition[kept], repetition[other]) << report.schedule;

@@ -311,8 +311,10 @@ Trial trial_of(
 // well be one more or fewer (patch_schedule_pvt.h: alternative_levels), of whichever of the
 // two arranges the sample's features nearer the way the sample does without repeating
 // itself: both run on a trial output (kTrialScale times the sample's size, or the output
-// itself where that is smaller) and are compared as Trial says; `schedule` then says which
-// was kept and why, and `opt` holds the kept levels and iterations.
+// itself where that is smaller) and are compared as Trial says. The deeper schedule is
+// tried first: where it repeats itself, the shallower one, which lays out smaller pieces
+// and so repeats less, is kept without a trial of its own. `schedule` then says which was
+// kept and why, and `opt` holds the kept levels and iterations.
 Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
     const FeatureScale& scale, bool automatic_levels, PatchOptions& opt, std::string& schedule)
 {
@@ -322,39 +324,50 @@ Copies chosen_copies(const std::vector<Plane>& planes, const PlanarImage& in,
     const int deepest = std::max(opt.levels, other);
     detail::SampleLevels sample(
         planes, deepest, opt.isotropic != 0, opt.patch.front(), opt.coherence, opt.nthreads);
-    PatchOptions first = opt; // the automatic schedule at the trial's size
-    first.width = std::min(opt.width, int(kTrialScale * sw));
-    first.height = std::min(opt.height, int(kTrialScale * sh));
-    if (other == 0 || levels_that_fit(sw, sh, first.width, first.height, deepest, opt) < deepest)
+    PatchOptions trial = opt; // the trial's size
+    trial.width = std::min(opt.width, int(kTrialScale * sw));
+    trial.height = std::min(opt.height, int(kTrialScale * sh));
+    if (other == 0 || levels_that_fit(sw, sh, trial.width, trial.height, deepest, opt) < deepest)
         return optimize(sample, opt, 0.0, 1.0);
-    const bool final_size = first.width == opt.width && first.height == opt.height;
+    const bool final_size = trial.width == opt.width && trial.height == opt.height;
     const double span = final_size ? 0.5 : 0.25;
-    PatchOptions second = first; // the other level count
-    second.levels = other;
-    second.iterations.clear();
+    PatchOptions alternative = trial; // the other level count
+    alternative.levels = other;
+    alternative.iterations.clear();
     for (int l = 0; l < other; ++l)
-        second.iterations.push_back(opt.iterations_at(l));
-    Copies a = optimize(sample, first, 0.0, span);
-    Copies b = optimize(sample, second, span, span);
-    const Trial ta = trial_of(a, in, first.width, first.height, scale.size, opt.nthreads);
-    const Trial tb = trial_of(b, in, first.width, first.height, scale.size, opt.nthreads);
-    const double limit = repetition_limit(scale.size, std::min(first.width, first.height));
-    const bool keep_other = better_trial(tb, ta, limit);
-    const Trial& kept = keep_other ? tb : ta;
-    const Trial& dropped = keep_other ? ta : tb;
+        alternative.iterations.push_back(opt.iterations_at(l));
+    const PatchOptions& deep = other > opt.levels ? alternative : trial;
+    const PatchOptions& shallow = other > opt.levels ? trial : alternative;
+    const double limit = repetition_limit(scale.size, std::min(trial.width, trial.height));
+    auto keep = [&](const PatchOptions& kept) {
+        opt.levels = kept.levels;
+        opt.iterations = kept.iterations;
+    };
     char why[240];
+    Copies d = optimize(sample, deep, 0.0, span);
+    const Trial td = trial_of(d, in, trial.width, trial.height, scale.size, opt.nthreads);
+    if (td.repetition > limit) {
+        std::snprintf(why, sizeof(why),
+            "; %d levels kept over %d, which repeats itself on a %dx%d trial (repetition %.3f)",
+            shallow.levels, deep.levels, trial.width, trial.height, td.repetition);
+        schedule += why;
+        keep(shallow);
+        return optimize(sample, opt, span, 1.0 - span);
+    }
+    Copies s = optimize(sample, shallow, span, span);
+    const Trial ts = trial_of(s, in, trial.width, trial.height, scale.size, opt.nthreads);
+    const bool keep_deep = better_trial(td, ts, limit);
+    const Trial& kept = keep_deep ? td : ts;
+    const Trial& dropped = keep_deep ? ts : td;
     std::snprintf(why, sizeof(why),
         "; %d levels kept over %d: structure distance %.3f against %.3f%s on a %dx%d trial",
-        keep_other ? other : opt.levels, keep_other ? opt.levels : other, kept.distance,
-        dropped.distance, dropped.repetition > limit ? ", which repeats itself" : "", first.width,
-        first.height);
+        keep_deep ? deep.levels : shallow.levels, keep_deep ? shallow.levels : deep.levels,
+        kept.distance, dropped.distance, dropped.repetition > limit ? ", which repeats itself" : "",
+        trial.width, trial.height);
     schedule += why;
-    if (keep_other) {
-        opt.levels = second.levels;
-        opt.iterations = second.iterations;
-    }
+    keep(keep_deep ? deep : shallow);
     if (final_size)
-        return keep_other ? b : a;
+        return keep_deep ? std::move(d) : std::move(s);
     return optimize(sample, opt, 2 * span, 1.0 - 2 * span);
 }
 
