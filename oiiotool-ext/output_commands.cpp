@@ -30,6 +30,38 @@ std::string without_file(const std::string& error)
     return colon == std::string::npos ? error : error.substr(colon + 2);
 }
 
+// `image` converted from scene-linear to `space` for writing. Where that changes no value
+// (`space` is scene-linear or data) and the pixels need no alpha handling (finite packed
+// float without alpha, which ColorConfig::convert_image would copy as they are), a view of
+// `image`'s own pixels instead of a copy: a 1024x1024 RGB result is 12 MB not copied. The
+// caller may change the view's spec, never its pixels, and must not outlive `image`.
+OIIO::ImageBuf output_pixels(const ColorConfig& cc, const OIIO::ImageBuf& image,
+    const std::string& space, bool associate, const std::string& filename, int threads)
+{
+    const OIIO::ImageSpec& spec = image.spec();
+    const auto* pixels = static_cast<const float*>(image.localpixels());
+    const bool unchanged = space == cc.resolve(cc.scene_linear()) || cc.is_data(space);
+    if (unchanged && pixels && spec.alpha_channel < 0 && spec.format == OIIO::TypeFloat
+        && spec.channelformats.empty() && spec.depth <= 1
+        && image.pixel_stride() == OIIO::stride_t(spec.pixel_bytes())
+        && image.scanline_stride() == OIIO::stride_t(spec.scanline_bytes())
+        && std::all_of(pixels, pixels + spec.image_pixels() * size_t(spec.nchannels),
+            [](float v) { return std::isfinite(v); })) {
+        // The spec convert_image gives: the same pixels and metadata, at the origin.
+        OIIO::ImageSpec view(spec.width, spec.height, spec.nchannels, OIIO::TypeFloat);
+        view.channelnames = spec.channelnames;
+        for (const OIIO::ParamValue& p : spec.extra_attribs)
+            if (p.name() != "oiio:UnassociatedAlpha")
+                view.attribute(p.name(), p.type(), p.data());
+        return OIIO::ImageBuf(view, const_cast<float*>(pixels));
+    }
+    OIIO::ImageBuf out;
+    std::string error;
+    if (!cc.convert_image(image, cc.scene_linear(), space, associate, out, error, threads))
+        throw CliError("-o " + filename + " : " + error);
+    return out;
+}
+
 // Writes `image`, the pixels of `item` (its own, or one UDIM tile of its bake, or a map).
 void write_pixels(CliState& state, const StackItem& item, const OIIO::ImageBuf& image,
     const std::string& filename)
@@ -43,11 +75,9 @@ void write_pixels(CliState& state, const StackItem& item, const OIIO::ImageBuf& 
         throw CliError("--tocolorspace : " + cc.unknown_colorspace(space));
     space = cc.resolve(space);
 
+    OIIO::ImageBuf out = output_pixels(
+        cc, image, space, stores_associated_alpha(filename), filename, state.threads);
     std::string error;
-    OIIO::ImageBuf out;
-    if (!cc.convert_image(image, cc.scene_linear(), space, stores_associated_alpha(filename), out,
-            error, state.threads))
-        throw CliError("-o " + filename + " : " + error);
     // Floating-point files hold every value: half only up to 65504 (a float EXR instead).
     if (type == OIIO::TypeHalf)
         type = type_holding(value_range(out, state.threads), type, state.data_format, filename);

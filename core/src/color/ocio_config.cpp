@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// ColorConfig: a thin, exception-free layer over an OCIO 2.1 config.
+// ColorConfig: a thin, exception-free layer over an OCIO 2.1 config (its pixel conversions are
+// in image_conversion.cpp).
 #include <texsyn/color.h>
 #include <texsyn/error_text.h>
 #include <texsyn/io.h>
@@ -10,17 +11,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <functional>
-#include <mutex>
 #include <sstream>
 #include <utility>
 
 #include <OpenColorIO/OpenColorIO.h>
-#include <OpenImageIO/parallel.h>
 
-#include "image/parallel_pvt.h"
 #include <OpenImageIO/strutil.h>
 
+#include "color_config_pvt.h"
 #include "lut_files_pvt.h"
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -29,13 +27,6 @@ namespace OCIO = OCIO_NAMESPACE;
 extern const char* const texsyn_bundled_ocio_config;
 
 namespace texsyn {
-
-struct ColorConfig::Impl {
-    OCIO::ConstConfigRcPtr config;
-    std::string source;
-    std::string origin;
-    bool bundled = false;
-};
 
 namespace {
 
@@ -201,99 +192,6 @@ std::vector<std::string> ColorConfig::colorspace_names() const
         names.emplace_back(cfg->getColorSpaceNameByIndex(
             OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL, i));
     return names;
-}
-
-namespace {
-
-// Runs fn(y0, y1) over blocks of ~16k pixels in parallel and returns the first error
-// message ("" if none): exceptions must not escape a pool thread.
-std::string for_row_blocks(
-    int width, int height, int nthreads, const std::function<void(int64_t, int64_t)>& fn)
-{
-    std::mutex mutex;
-    std::string error;
-    OIIO::parallel_for_chunked(
-        0, height, std::max<int64_t>(1, (int64_t(1) << 14) / std::max(1, width)),
-        [&](int64_t y0, int64_t y1) {
-            try {
-                fn(y0, y1);
-            } catch (const std::exception& e) {
-                std::lock_guard<std::mutex> lock(mutex);
-                if (error.empty())
-                    error = e.what();
-            }
-        },
-        detail::split_every_item(nthreads));
-    return error;
-}
-
-std::string convert_rgb(
-    const OCIO::ConstCPUProcessorRcPtr& cpu, Plane& r, Plane& g, Plane& b, int nthreads)
-{
-    const int w = r.width();
-    return for_row_blocks(w, r.height(), nthreads, [&](int64_t y0, int64_t y1) {
-        OCIO::PlanarImageDesc desc(
-            r.row(int(y0)), g.row(int(y0)), b.row(int(y0)), nullptr, w, long(y1 - y0));
-        cpu->apply(desc);
-    });
-}
-
-// Grey is converted as the colour (g, g, g); the result's mean is the new grey.
-std::string convert_grey(const OCIO::ConstCPUProcessorRcPtr& cpu, Plane& grey, int nthreads)
-{
-    const int w = grey.width();
-    return for_row_blocks(w, grey.height(), nthreads, [&](int64_t y0, int64_t y1) {
-        const size_t npix = size_t(w) * size_t(y1 - y0);
-        float* g = grey.row(int(y0));
-        std::vector<float> rgb(3 * npix);
-        for (size_t i = 0; i < npix; ++i)
-            rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = g[i];
-        OCIO::PackedImageDesc desc(rgb.data(), long(npix), 1, 3);
-        cpu->apply(desc);
-        for (size_t i = 0; i < npix; ++i)
-            g[i] = (rgb[3 * i] + rgb[3 * i + 1] + rgb[3 * i + 2]) * (1.0f / 3.0f);
-    });
-}
-
-} // namespace
-
-bool ColorConfig::convert(PlanarImage& image, const std::string& from, const std::string& to,
-    std::string& error, int nthreads) const
-{
-    for (const std::string* name : { &from, &to }) {
-        if (resolve(*name).empty()) {
-            error = unknown_colorspace(*name);
-            return false;
-        }
-    }
-    const std::string src = resolve(from), dst = resolve(to);
-    if (src == dst || is_data(src) || is_data(dst))
-        return true;
-    const int ncolor = image.ncolor();
-    if (ncolor < 1 || image.width() < 1 || image.height() < 1)
-        return true;
-    // Converted copies are swapped in only on success: the image is untouched on failure.
-    const int nconv = ncolor >= 3 ? 3 : 1;
-    std::vector<Plane> planes(image.channels.begin(), image.channels.begin() + nconv);
-    std::string ocio_error;
-    try {
-        // Lossless: no fast approximations of pow/log, so statistics see exact values.
-        OCIO::ConstProcessorRcPtr processor
-            = m_impl->config->getProcessor(src.c_str(), dst.c_str());
-        OCIO::ConstCPUProcessorRcPtr cpu = processor->getOptimizedCPUProcessor(
-            OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_LOSSLESS);
-        ocio_error = nconv == 3 ? convert_rgb(cpu, planes[0], planes[1], planes[2], nthreads)
-                                : convert_grey(cpu, planes[0], nthreads);
-    } catch (const std::exception& e) {
-        ocio_error = e.what();
-    }
-    if (!ocio_error.empty()) {
-        error = "colour conversion '" + src + "' -> '" + dst + "': " + ocio_error;
-        return false;
-    }
-    for (int c = 0; c < nconv; ++c)
-        image.channels[size_t(c)] = std::move(planes[size_t(c)]);
-    return true;
 }
 
 bool ColorConfig::chromaticities(const std::string& name, float xy[8]) const

@@ -150,7 +150,7 @@ bool read_image(const std::string& filename, OIIO::ImageBuf& dst, std::string& e
     OIIO::ImageSpec spec = in->spec();
     spec.format = OIIO::TypeFloat;
     spec.channelformats.clear();
-    OIIO::ImageBuf buf(spec);
+    OIIO::ImageBuf buf(spec, OIIO::InitializePixels::No); // every pixel is read below
     if (!buf.localpixels()) // OIIO logs a failed allocation and leaves no pixels
         return fail("not enough memory for its " + std::to_string(spec.width) + "x"
             + std::to_string(spec.height) + " pixels");
