@@ -10,13 +10,10 @@
 set -euo pipefail
 build=$(realpath "$1")
 runs="${2:-5}"
-repo="$(cd "$(dirname "$0")/.." && pwd)"
 texsyn="$build/oiiotool-ext/texsyn"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-unset OCIO TEXSYN_CACHE
-samples="$repo/data/samples"
+# shellcheck source=bench/common.sh
+source "$(dirname "$0")/common.sh"
+bench_workdir
 oiiotool --pattern constant:color=0 1024x1024 1 --fill:color=1 256x256+384+384 -d uint8 \
   -o hole.png
 oiiotool "$samples/rust.png" --resize 1024x1024 -o plate.png
@@ -41,7 +38,6 @@ subprocess.run([sys.argv[1], "--version"], check=True, stdout=subprocess.DEVNULL
 print("%.3f" % (time.perf_counter() - t0))
 EOF
 }
-median() { printf '%s\n' "$@" | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }'; }
 
 workload() { # NAME ARGS...
   local name="$1"; shift

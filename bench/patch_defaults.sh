@@ -10,27 +10,12 @@ set -euo pipefail
 build=$(realpath "$1")
 other=$(realpath "$2")
 pairs="${3:-5}"
-repo="$(cd "$(dirname "$0")/.." && pwd)"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-unset OCIO TEXSYN_CACHE
-samples="$repo/data/samples"
+# shellcheck source=bench/common.sh
+source "$(dirname "$0")/common.sh"
+bench_workdir
 oiiotool "$samples/bricks.png" --cut 128x128+0+0 -o bricks128.png
 cp "$samples/bricks.png" "$samples/grass.png" "$samples/tiles_green.png" \
    "$samples/paper_crinkled.png" "$samples/rust.png" .
-
-# Runs a command; prints "seconds peak_MB" (wall time, the child's largest resident set).
-measure() {
-  /usr/bin/python3 - "$@" <<'EOF'
-import resource, subprocess, sys, time
-t0 = time.perf_counter()
-subprocess.run(sys.argv[1:], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-t = time.perf_counter() - t0
-print("%.3f %.0f" % (t, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024))
-EOF
-}
-median() { printf '%s\n' "$@" | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }'; }
 
 workload() { # NAME SAMPLE SIZE
   local new_t=() new_m=() old_t=() old_m=() ratio=()
