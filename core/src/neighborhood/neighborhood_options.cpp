@@ -67,14 +67,17 @@ size_t neighborhood_memory_estimate(int sample_width, int sample_height, int nch
     // The finest level dominates: its sample vectors (of the square layout when seams are
     // repaired) (count x dim floats) and a searcher
     // about as large again (TSVQ centroids, kd-tree PCA copies, k-coherence lists), plus
-    // the output's pyramid and source maps (~ 4/3 x (channels + 2) values per pixel) and
-    // the sample's pyramid.
+    // the output's pyramid and source maps (~ 4/3 x (channels + 2) values per pixel), the
+    // result as a float image and the copy every front end makes to write or return it (2
+    // x channels values per pixel: measured whole processes, RGB, 56 bytes per output
+    // pixel at 4096x4096 and 8192x8192; bench/README.md), and the sample's pyramid.
     const detail::NeighborhoodLayout layout = detail::make_layout(
         opt.n_at(0), opt.coarse, opt.levels > 1, opt.tile ? NeighborhoodShape::Square : opt.shape);
     const double count = double(sample_width) * double(sample_height);
     const double dim = double(layout.npixels()) * double(nchannels);
     const double vectors = count * dim * 4.0;
-    const double out = double(out_width) * double(out_height) * 4.0 / 3.0 * (4.0 * nchannels + 8.0);
+    const double out = double(out_width) * double(out_height)
+        * (4.0 / 3.0 * (4.0 * nchannels + 8.0) + 8.0 * nchannels);
     const double bytes = 2.0 * vectors + out + count * 4.0 / 3.0 * 4.0 * nchannels;
     return bytes > 1e18 ? size_t(1e18) : size_t(bytes);
 }
