@@ -95,6 +95,8 @@ cd "$dir"
 # allocator: the tests that rely on either run in the normal build only.
 exclude="doc_commands|docs_generated|clang_format|recipe_schema|ocio_config|downstream|gpl_backends"
 exclude="$exclude|OutOfMemoryIsAMessage|AddressSpaceLimit|MemoryBytesIsWhatTheSearcherHolds"
+# The memory model is checked against the peaks of uninstrumented processes.
+exclude="$exclude|test_memory_model"
 # Stop latency is a bound in seconds, which instrumented code runs several times slower.
 exclude="$exclude|StopLatency"
 # The picture-quality measurements (*Quality.*) run the same code as the unit tests at
